@@ -1,0 +1,149 @@
+#include "app/command_line.h"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+
+namespace geomesh {
+
+namespace {
+
+// Reads the arguments one at a time and reports the flag a missing value belongs to.
+class ArgumentReader {
+ public:
+  explicit ArgumentReader(const std::vector<std::string>& args) : args_(args) {}
+  bool done() const { return next_ >= args_.size(); }
+  const std::string& take() { return args_[next_++]; }
+  const std::string& value(const std::string& flag) {
+    if (done()) throw CommandLineError("option '" + flag + "' needs a value");
+    return take();
+  }
+  double number(const std::string& flag) {
+    const std::string& text = value(flag);
+    double v = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+      throw CommandLineError("option '" + flag + "' needs a number, got '" + text + "'");
+    return v;
+  }
+
+ private:
+  const std::vector<std::string>& args_;
+  std::size_t next_ = 0;
+};
+
+// Flags that set one numeric option.
+const std::map<std::string, std::string>& numberOptionFlags() {
+  static const std::map<std::string, std::string> flags = {
+      {"-clmin", "Mesh.MeshSizeMin"},     {"-clmax", "Mesh.MeshSizeMax"},
+      {"-clscale", "Mesh.MeshSizeFactor"}, {"-nt", "General.NumThreads"},
+      {"-order", "Mesh.ElementOrder"},    {"-smooth", "Mesh.Smoothing"},
+      {"-rand", "Mesh.RandomFactor"},
+  };
+  return flags;
+}
+
+// -algo names, as Gmsh spells them, and the Mesh.Algorithm / Mesh.Algorithm3D values.
+bool applyAlgorithm(const std::string& name, CommandLine& cl) {
+  static const std::map<std::string, std::pair<const char*, double>> algos = {
+      {"meshadapt", {"Mesh.Algorithm", 1}}, {"auto", {"Mesh.Algorithm", 2}},
+      {"del2d", {"Mesh.Algorithm", 5}},     {"front2d", {"Mesh.Algorithm", 6}},
+      {"bamg", {"Mesh.Algorithm", 7}},      {"delquad", {"Mesh.Algorithm", 8}},
+      {"pack", {"Mesh.Algorithm", 9}},      {"quadqs", {"Mesh.Algorithm", 11}},
+      {"del3d", {"Mesh.Algorithm3D", 1}},   {"front3d", {"Mesh.Algorithm3D", 4}},
+      {"mmg3d", {"Mesh.Algorithm3D", 7}},   {"hxt", {"Mesh.Algorithm3D", 10}},
+  };
+  auto it = algos.find(name);
+  if (it == algos.end()) return false;
+  cl.numberOptions.emplace_back(it->second.first, it->second.second);
+  return true;
+}
+
+bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
+  if (flag.size() == 2 && flag[1] >= '0' && flag[1] <= '3') {
+    cl.dimension = flag[1] - '0';
+  } else if (flag == "-o") {
+    cl.output = in.value(flag);
+  } else if (flag == "-format" || flag == "-f") {
+    cl.format = in.value(flag);
+  } else if (flag == "-bin") {
+    cl.binary = true;
+  } else if (flag == "-save_all" || flag == "-saveall") {
+    cl.saveAll = true;
+  } else if (flag == "-check") {
+    cl.check = true;
+  } else if (flag == "-v") {
+    cl.verbosity = static_cast<int>(in.number(flag));
+  } else if (flag == "-setnumber") {
+    const std::string name = in.value(flag);
+    cl.setNumbers.emplace_back(name, in.number(flag));
+  } else if (flag == "-setstring") {
+    const std::string name = in.value(flag);
+    cl.setStrings.emplace_back(name, in.value(flag));
+  } else if (flag == "-algo") {
+    const std::string name = in.value(flag);
+    if (!applyAlgorithm(name, cl)) throw CommandLineError("unknown algorithm '" + name + "' for -algo");
+  } else if (flag == "-help" || flag == "-h" || flag == "--help") {
+    cl.help = true;
+  } else if (flag == "-version" || flag == "--version") {
+    cl.version = true;
+  } else if (flag == "-help-options" || flag == "-help_options") {
+    cl.helpOptions = true;
+  } else if (auto it = numberOptionFlags().find(flag); it != numberOptionFlags().end()) {
+    cl.numberOptions.emplace_back(it->second, in.number(flag));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CommandLine parseCommandLine(const std::vector<std::string>& args) {
+  CommandLine cl;
+  ArgumentReader in(args);
+  while (!in.done()) {
+    const std::string& arg = in.take();
+    if (arg.size() > 1 && arg[0] == '-') {
+      if (!parseFlag(arg, in, cl)) throw CommandLineError("unknown option '" + arg + "' (see -help)");
+    } else {
+      cl.files.push_back(arg);
+    }
+  }
+  if (cl.saveAll) cl.numberOptions.emplace_back("Mesh.SaveAll", 1);
+  if (cl.binary) cl.numberOptions.emplace_back("Mesh.Binary", 1);
+  return cl;
+}
+
+std::string commandLineHelp() {
+  return R"(Usage: geomesh [options] file.geo
+
+Meshes a .geo script in batch mode and writes the mesh (MSH 4.1 by default).
+
+Mesh:
+  -0, -1, -2, -3         stop after evaluating the geometry (-0), or mesh up to dimension 1, 2, 3
+  -o FILE                output file (default: the script's name with .msh)
+  -format FORMAT         output format: msh41 (msh4, msh), msh22 (msh2)
+  -bin                   binary output
+  -save_all              save every element, not only those of physical groups
+  -algo NAME             2D/3D algorithm: meshadapt, del2d, front2d, del3d, ...
+  -clmin VALUE           minimum mesh size (Mesh.MeshSizeMin)
+  -clmax VALUE           maximum mesh size (Mesh.MeshSizeMax)
+  -clscale VALUE         mesh size factor (Mesh.MeshSizeFactor)
+  -order N               element order (Mesh.ElementOrder)
+  -smooth N              smoothing passes (Mesh.Smoothing)
+  -rand VALUE            random perturbation factor (Mesh.RandomFactor)
+  -check                 check a mesh file (.msh) and report problems
+Script:
+  -setnumber NAME VALUE  set a numeric parameter (overrides DefineConstant/DefineNumber)
+  -setstring NAME VALUE  set a string parameter (overrides DefineString)
+General:
+  -nt N                  number of threads (General.NumThreads)
+  -v N                   verbosity: 0 silent, 1 errors, 2 warnings, 4 information, 5 default, 99 debug
+  -help-options          list every option with its default and help
+  -version               print the version
+  -help                  this help
+)";
+}
+
+}  // namespace geomesh

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace geomesh {
+
+// The command line, spelled as Gmsh's batch mode spells it.
+struct CommandLine {
+  std::vector<std::string> files;
+  std::optional<int> dimension;  // -0 -1 -2 -3
+  std::string output;            // -o
+  std::string format;            // -format (msh41, msh4, msh22, msh2, msh)
+  bool binary = false;           // -bin
+  bool saveAll = false;          // -save_all
+  bool check = false;            // -check
+  bool help = false;             // -help, -h
+  bool version = false;          // -version
+  bool helpOptions = false;      // -help-options
+  int verbosity = 5;             // -v
+  // Options in the order given: name, value (numbers), applied before and after the script
+  // so that the command line wins over the script, as in Gmsh.
+  std::vector<std::pair<std::string, double>> numberOptions;
+  std::vector<std::pair<std::string, std::string>> stringOptions;
+  // -setnumber / -setstring: parameter overrides.
+  std::vector<std::pair<std::string, double>> setNumbers;
+  std::vector<std::pair<std::string, std::string>> setStrings;
+};
+
+// A command line that cannot be understood; the message names the offending argument.
+class CommandLineError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+CommandLine parseCommandLine(const std::vector<std::string>& args);
+std::string commandLineHelp();
+
+}  // namespace geomesh

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/mesh.h"
+
+namespace geomesh {
+
+// What a run produced, in the figures golden tests compare: element counts per type,
+// measures per dimension, quality, and the physical groups.
+struct MeshSummary {
+  std::size_t nodes = 0;
+  std::map<ElementType, std::size_t> elements;
+  double length = 0;  // total length of the 1D elements
+  double area = 0;    // total area of the 2D elements
+  double volume = 0;  // total volume of the 3D elements
+  // Gamma of the highest-dimensional elements (1 for an equilateral one); 0 when none.
+  double minQuality = 0;
+  double meanQuality = 0;
+  struct Group {
+    int dim = 0;
+    int tag = 0;
+    std::string name;
+    std::size_t elements = 0;
+  };
+  std::vector<Group> physicalGroups;
+};
+
+MeshSummary summarizeMesh(const Model& model, const Mesh& mesh);
+std::string formatSummary(const MeshSummary& summary);
+// "4 points, 4 curves, 1 surface, 0 volumes, 2 physical groups"
+std::string describeModel(const Model& model);
+
+}  // namespace geomesh

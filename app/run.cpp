@@ -1,0 +1,192 @@
+#include "app/run.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "app/command_line.h"
+#include "app/console_log.h"
+#include "app/mesh_summary.h"
+#include "interpreter/diagnostics.h"
+#include "interpreter/session.h"
+#include "kernel/geometry_error.h"
+#include "mesh/generate.h"
+#include "mesh/io/msh_writer.h"
+
+namespace geomesh {
+
+namespace {
+
+constexpr const char* kVersion = "0.1.0";
+
+// Wall time of a stage, in seconds.
+class Stopwatch {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string formatSeconds(double s) {
+  std::ostringstream os;
+  os.precision(3);
+  os << s << " s";
+  return os.str();
+}
+
+// Every option with its default and help, one per line, as a script would set it.
+void listOptions(std::ostream& out) {
+  OptionRegistry options;
+  for (const OptionRegistry::Option& o : options.all()) {
+    out << o.name << " = ";
+    if (o.type != OptionType::String) {
+      out << o.defaultNumber;
+    } else {
+      out << '"' << o.defaultText << '"';
+    }
+    out << ";  // " << o.help << '\n';
+  }
+}
+
+void applyOptions(const CommandLine& cl, OptionRegistry& options) {
+  for (const auto& [name, value] : cl.numberOptions) options.setNumber(name, value);
+  for (const auto& [name, value] : cl.stringOptions) options.setString(name, value);
+}
+
+// The output file: -o, else the script's path with its extension replaced by ".msh".
+std::string outputPath(const CommandLine& cl) {
+  if (!cl.output.empty()) return cl.output;
+  std::filesystem::path p(cl.files.front());
+  p.replace_extension(".msh");
+  return p.string();
+}
+
+MshWriteOptions writeOptions(const CommandLine& cl, const OptionRegistry& options) {
+  MshWriteOptions w;
+  w.saveAll = options.number("Mesh.SaveAll") != 0;
+  w.binary = options.number("Mesh.Binary") != 0;
+  w.version = options.number("Mesh.MshFileVersion");
+  if (cl.format == "msh41" || cl.format == "msh4" || cl.format == "msh") {
+    w.version = 4.1;
+  } else if (cl.format == "msh22" || cl.format == "msh2") {
+    w.version = 2.2;
+  } else if (!cl.format.empty()) {
+    throw CommandLineError("unsupported output format '" + cl.format +
+                           "' (supported: msh41, msh4, msh22, msh2)");
+  }
+  if (w.version >= 4) {
+    w.version = 4.1;
+  } else {
+    w.version = 2.2;
+  }
+  return w;
+}
+
+// Evaluates the script; returns false if the script asked to stop (Exit).
+bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
+  Stopwatch watch;
+  const std::string& file = cl.files.front();
+  log.info("Reading '" + file + "'...");
+  try {
+    session.runFile(file);
+  } catch (const ScriptExit&) {
+    log.info("Script called Exit: stopping");
+    return false;
+  }
+  log.info("Done reading '" + file + "' (" + formatSeconds(watch.seconds()) + ")");
+  return true;
+}
+
+void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
+  const int dim = *cl.dimension;
+  MshWriteOptions w = writeOptions(cl, session.options());
+  if (dim == 0) {
+    session.synchronize();
+    log.info("Geometry: " + describeModel(session.model()));
+    return;
+  }
+  Stopwatch watch;
+  session.generate(dim);
+  log.info("Meshing done (" + formatSeconds(watch.seconds()) + ")");
+  const std::string path = outputPath(cl);
+  Stopwatch writeWatch;
+  log.info("Writing '" + path + "'...");
+  writeMshFile(path, session.model(), session.mesh(), w);
+  log.info("Done writing '" + path + "' (" + formatSeconds(writeWatch.seconds()) + ")");
+  log.info(formatSummary(summarizeMesh(session.model(), session.mesh())));
+}
+
+int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
+  Session session(log, out);
+  for (const auto& [name, value] : cl.setNumbers) session.numberOverrides()[name] = value;
+  for (const auto& [name, value] : cl.setStrings) session.stringOverrides()[name] = value;
+  applyOptions(cl, session.options());
+  if (!evaluateScript(cl, session, log)) return 0;
+  applyOptions(cl, session.options());
+  if (!cl.dimension) {
+    session.synchronize();
+    log.info("Geometry: " + describeModel(session.model()));
+    log.info("Nothing meshed: give -1, -2 or -3 to mesh, -0 to check the geometry");
+    return 0;
+  }
+  meshAndWrite(cl, session, log);
+  return 0;
+}
+
+}  // namespace
+
+int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  ConsoleLog log(err, 5);
+  CommandLine cl;
+  try {
+    cl = parseCommandLine(args);
+  } catch (const CommandLineError& e) {
+    log.error(e.what());
+    return 1;
+  }
+  log.setVerbosity(cl.verbosity);
+  if (cl.help) {
+    out << commandLineHelp();
+    return 0;
+  }
+  if (cl.version) {
+    out << kVersion << '\n';
+    return 0;
+  }
+  if (cl.helpOptions) {
+    listOptions(out);
+    return 0;
+  }
+  if (cl.files.empty()) {
+    log.error("no input file given (see -help)");
+    return 1;
+  }
+  if (cl.files.size() > 1) {
+    log.error("only one input file is supported, got " + std::to_string(cl.files.size()));
+    return 1;
+  }
+  try {
+    return runSession(cl, out, log);
+  } catch (const ScriptError& e) {
+    log.diagnostic(e.what());
+  } catch (const MeshError& e) {
+    log.error(e.what());
+  } catch (const GeometryError& e) {
+    log.error(e.what());
+  } catch (const CommandLineError& e) {
+    log.error(e.what());
+  } catch (const std::out_of_range& e) {
+    log.error(e.what());
+  } catch (const std::bad_alloc&) {
+    log.error("out of memory");
+  } catch (const std::exception& e) {
+    log.error(e.what());
+  }
+  return 1;
+}
+
+}  // namespace geomesh

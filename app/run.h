@@ -1,0 +1,13 @@
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace geomesh {
+
+// Runs the geomesh command: `args` without the program name. Script output (Printf) goes to
+// `out`, log lines and diagnostics to `err`. Returns the exit status.
+int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace geomesh

@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""Runs benchmark scripts with geomesh and with the reference implementation (Gmsh from PyPI,
+installed into a virtual environment this script creates), on the same machine in the same
+run, and reports wall times, peak memory, mesh sizes, throughput and ratios.
+
+    python3 bench/compare.py                       # every case
+    python3 bench/compare.py square_uniform        # one case
+"""
+import argparse
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+VENV = ROOT / ".venv-bench"
+GEOMESH = ROOT / "build" / "bin" / "geomesh"
+SCRIPTS = ROOT / "bench" / "scripts"
+
+# name: (script, arguments, what is measured)
+CASES = {
+    "square_uniform": ("square_uniform.geo", ["-2"], "2D"),
+    "square_uniform_small": ("square_uniform.geo", ["-2", "-setnumber", "lc", "0.01"], "2D"),
+    "many_points": ("many_points.geo", ["-0"], "script"),
+}
+
+
+def ensure_reference():
+    python = VENV / "bin" / "python"
+    if not python.exists():
+        subprocess.run([sys.executable, "-m", "venv", str(VENV)], check=True)
+    probe = subprocess.run([str(python), "-c", "import gmsh"], capture_output=True)
+    if probe.returncode != 0:
+        subprocess.run([str(python), "-m", "pip", "install", "-q", "gmsh"], check=True)
+    return python
+
+
+def measure(cmd, cwd):
+    """Runs cmd inside a fresh Python child so that its peak RSS is its own."""
+    wrapper = (
+        "import resource, subprocess, sys, time, json\n"
+        "t = time.perf_counter()\n"
+        "p = subprocess.run(sys.argv[1:], capture_output=True, text=True)\n"
+        "w = time.perf_counter() - t\n"
+        "r = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0\n"
+        "print(json.dumps({'rc': p.returncode, 'wall': w, 'rss': r, 'out': p.stdout + p.stderr}))\n"
+    )
+    proc = subprocess.run([sys.executable, "-c", wrapper] + cmd, cwd=cwd, capture_output=True, text=True)
+    data = json.loads(proc.stdout)
+    if data["rc"] != 0:
+        raise RuntimeError(f"{' '.join(map(str, cmd))} failed:\n{data['out'][-2000:]}")
+    return data["wall"], data["rss"], data["out"]
+
+
+def stage_seconds(log, stage):
+    """Wall time of a meshing stage ('2D') from either program's log, if it reports one."""
+    m = re.search(r"Done meshing " + stage + r" \(Wall ([0-9.eE+-]+)s", log)
+    if m:
+        return float(m.group(1))
+    m = re.search(r"Meshing " + stage + r".*?\(([0-9.eE+-]+) s", log)
+    return float(m.group(1)) if m else None
+
+
+def triangles(msh_path):
+    """Number of 3-node triangles in an MSH 4.1 ASCII file."""
+    count = 0
+    with open(msh_path) as f:
+        for line in f:
+            if line.startswith("$Elements"):
+                break
+        next(f)
+        for line in f:
+            if line.startswith("$EndElements"):
+                break
+            parts = line.split()
+            if len(parts) == 4:
+                if int(parts[2]) == 2:
+                    count += int(parts[3])
+    return count
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("cases", nargs="*", default=list(CASES))
+    args = parser.parse_args()
+    if not GEOMESH.exists():
+        sys.exit(f"build geomesh first ({GEOMESH} is missing): bash scripts/setup.sh")
+    python = ensure_reference()
+    reference = [str(python), "-c",
+                 "import sys, gmsh; gmsh.initialize(['gmsh'] + sys.argv[1:], run=True); gmsh.finalize()"]
+    work = ROOT / "build" / "bench"
+    work.mkdir(parents=True, exist_ok=True)
+    print(f"{'case':24} {'program':10} {'wall s':>8} {'stage s':>8} {'peak MiB':>9} {'triangles':>10} {'tri/s':>10}")
+    for name in args.cases:
+        script, extra, stage = CASES[name]
+        rows = {}
+        for program, cmd in (("geomesh", [str(GEOMESH)]), ("reference", reference)):
+            out = work / f"{name}-{program}.msh"
+            full = cmd + [str(SCRIPTS / script)] + extra + ["-nt", "1", "-o", str(out)]
+            wall, rss, log = measure(full, work)
+            st = stage_seconds(log, stage) if stage != "script" else wall
+            tri = triangles(out) if stage == "2D" and out.exists() else 0
+            rate = tri / st if tri and st else 0
+            rows[program] = (wall, st, rss, tri, rate)
+            st_text = f"{st:8.3f}" if st is not None else "       -"
+            print(f"{name:24} {program:10} {wall:8.3f} {st_text} {rss:9.1f} {tri:10d} {rate:10.0f}")
+        g, r = rows["geomesh"], rows["reference"]
+        speed = (r[1] / g[1]) if g[1] and r[1] else float("nan")
+        print(f"{name:24} {'ratio':10} {r[0] / g[0]:8.2f}x {speed:7.2f}x {r[2] / g[2]:8.2f}x  (reference / geomesh)")
+
+
+if __name__ == "__main__":
+    main()

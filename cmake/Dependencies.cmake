@@ -1,0 +1,63 @@
+# Finds every third-party dependency; a missing one stops the configuration with the name of
+# the Debian package that provides it (scripts/setup.sh installs them all).
+
+function(geomesh_require found what package)
+  if(NOT ${found})
+    message(FATAL_ERROR "geomesh needs ${what}: install the Debian package '${package}' "
+                        "(or run scripts/setup.sh, which installs every dependency)")
+  endif()
+endfunction()
+
+find_program(RE2C_EXECUTABLE re2c)
+geomesh_require(RE2C_EXECUTABLE "re2c (lexer generator)" "re2c")
+find_package(BISON 3.7 QUIET)
+geomesh_require(BISON_FOUND "bison >= 3.7 (parser generator)" "bison")
+
+find_path(CGAL_INCLUDE_DIR CGAL/Exact_predicates_inexact_constructions_kernel.h)
+geomesh_require(CGAL_INCLUDE_DIR "CGAL headers" "libcgal-dev")
+find_library(GMP_LIBRARY gmp)
+geomesh_require(GMP_LIBRARY "GMP" "libgmp-dev")
+find_library(MPFR_LIBRARY mpfr)
+geomesh_require(MPFR_LIBRARY "MPFR" "libmpfr-dev")
+add_library(geomesh_cgal INTERFACE)
+target_include_directories(geomesh_cgal SYSTEM INTERFACE ${CGAL_INCLUDE_DIR})
+target_link_libraries(geomesh_cgal INTERFACE ${MPFR_LIBRARY} ${GMP_LIBRARY})
+
+find_path(TETGEN_INCLUDE_DIR tetgen.h)
+find_library(TETGEN_LIBRARY tet)
+geomesh_require(TETGEN_INCLUDE_DIR "TetGen headers" "libtet1.5-dev")
+geomesh_require(TETGEN_LIBRARY "the TetGen library" "libtet1.5-dev")
+add_library(geomesh_tetgen INTERFACE)
+target_include_directories(geomesh_tetgen SYSTEM INTERFACE ${TETGEN_INCLUDE_DIR})
+target_compile_definitions(geomesh_tetgen INTERFACE TETLIBRARY)
+target_link_libraries(geomesh_tetgen INTERFACE ${TETGEN_LIBRARY})
+
+find_path(OCC_INCLUDE_DIR Standard_Version.hxx PATH_SUFFIXES opencascade)
+geomesh_require(OCC_INCLUDE_DIR "OpenCASCADE headers" "libocct-foundation-dev")
+set(GEOMESH_OCC_LIBS TKernel TKMath TKG2d TKG3d TKGeomBase TKBRep TKGeomAlgo TKTopAlgo TKPrim
+                     TKBO TKBool TKFillet TKOffset TKShHealing)
+set(GEOMESH_OCC_PACKAGES
+    TKernel=libocct-foundation-dev TKMath=libocct-foundation-dev
+    TKPrim=libocct-modeling-algorithms-dev TKBO=libocct-modeling-algorithms-dev
+    TKBool=libocct-modeling-algorithms-dev TKFillet=libocct-modeling-algorithms-dev
+    TKOffset=libocct-modeling-algorithms-dev TKShHealing=libocct-modeling-algorithms-dev
+    TKTopAlgo=libocct-modeling-algorithms-dev TKGeomAlgo=libocct-modeling-algorithms-dev)
+add_library(geomesh_occ INTERFACE)
+target_include_directories(geomesh_occ SYSTEM INTERFACE ${OCC_INCLUDE_DIR})
+foreach(lib ${GEOMESH_OCC_LIBS})
+  find_library(OCC_${lib}_LIBRARY ${lib})
+  set(package libocct-modeling-data-dev)
+  foreach(pair ${GEOMESH_OCC_PACKAGES})
+    if(pair MATCHES "^${lib}=(.*)$")
+      set(package ${CMAKE_MATCH_1})
+    endif()
+  endforeach()
+  geomesh_require(OCC_${lib}_LIBRARY "the OpenCASCADE library ${lib}" "${package}")
+  target_link_libraries(geomesh_occ INTERFACE ${OCC_${lib}_LIBRARY})
+endforeach()
+
+if(GEOMESH_TESTS)
+  find_package(GTest QUIET)
+  geomesh_require(GTest_FOUND "GoogleTest" "libgtest-dev")
+endif()
+find_package(Threads REQUIRED)

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "grammar/parser.hpp"
+
+namespace geomesh {
+
+// Turns script text into tokens for the parser. Keywords are case-sensitive, as in Gmsh.
+// Words that introduce commands (Point, Surface, Mesh, ...) are WORD tokens; the few that
+// only follow a shape (In, Using, Left, ...) are TAILWORD tokens; any word right after a '.'
+// is a plain identifier, so option names never collide with keywords.
+class Lexer {
+ public:
+  Lexer(std::string fileName, std::string_view text);
+
+  Parser::symbol_type next();
+
+  // The token before the current lookahead, for "expected ';' after ..." messages.
+  const std::string& previousText() const { return previousText_; }
+  const Parser::location_type& previousLocation() const { return previousLocation_; }
+  const std::string& currentText() const { return currentText_; }
+  const std::string& fileName() const { return fileName_; }
+
+ private:
+  Parser::symbol_type scan();
+  Parser::symbol_type word(std::string text, const Parser::location_type& where);
+  Parser::symbol_type number(const Parser::location_type& where);
+  Parser::symbol_type quoted(const Parser::location_type& where);
+  Parser::symbol_type punctuation(int token, const Parser::location_type& where);
+  void skipBlockComment(const Parser::location_type& where);
+  bool nextNonSpaceIs(char c) const;
+  void countLines(const char* from, const char* to);
+  Parser::location_type tokenLocation() const;
+  [[noreturn]] void fail(const Parser::location_type& where, const std::string& message) const;
+
+  std::string fileName_;
+  std::string text_;  // owns a NUL-terminated copy of the script
+  const char* cursor_;
+  const char* limit_;
+  const char* token_ = nullptr;
+  const char* lineStart_;
+  int line_ = 1;
+  bool afterDot_ = false;
+  bool defineAhead_ = false;
+  int defineDepth_ = 0;
+  std::string currentText_, previousText_;
+  Parser::location_type currentLocation_, previousLocation_;
+};
+
+}  // namespace geomesh

@@ -1,0 +1,219 @@
+// The .geo lexer. re2c turns this file into generated/grammar/lexer.cpp at build time.
+#include "grammar/lexer.h"
+
+#include <algorithm>
+#include <charconv>
+#include <string_view>
+
+namespace geomesh {
+namespace {
+
+using Token = Parser::token;
+
+// Words that start or continue a command (statement heads and shape kinds).
+constexpr std::string_view kCommandWords[] = {
+    "Abort", "Affine", "AdaptMesh", "Background", "Bezier", "Block", "BooleanDifference",
+    "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
+    "BSpline", "Chamfer", "ClassifySurfaces", "CreateGeometry", "Characteristic", "Circle", "Cohomology", "Coherence", "Color",
+    "CombinedBoundary", "Compound", "Cone", "CreateTopology", "Curve", "Cylinder", "Delete",
+    "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Error", "Exit", "Extrude", "Field",
+    "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide", "Homology", "Include",
+    "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm", "MeshSize", "NewModel", "NonBlockingSystem",
+    "OptimizeMesh", "Periodic", "Physical", "Physicals", "Plane", "Point", "PointsOf",
+    "PostProcessing", "Print", "Printf", "QuadTriAddVerts", "QuadTriNoNewVerts", "Recombine",
+    "Recursive", "Rectangle", "RefineMesh", "RelocateMesh", "RenumberMeshElements", "RenumberMeshNodes", "Reverse", "Rotate", "Ruled",
+    "Save", "SetChanged", "SetFactory", "SetNumber", "SetOrder", "SetString", "Show", "Sleep",
+    "Smoother", "Solver", "Sphere", "Spline", "Surface", "Symmetry", "System", "ThruSections",
+    "Torus", "Transfinite", "Translate", "View", "Volume", "Warning", "Wedge", "Wire",
+};
+
+// Words that only appear after a shape: Point{1} In Surface{2}; ... Using Progression 2;
+constexpr std::string_view kTailWords[] = {
+    "AlternateLeft", "AlternateRight", "Alternated", "Beta", "Bump", "Left", "Progression",
+    "Right", "Using",
+};
+
+// Attribute names inside DefineConstant[...] / DefineNumber[...] / DefineString[...].
+constexpr std::string_view kAttributeNames[] = {
+    "AutoCheck", "ChangedValue", "Choices", "Closed", "Graph", "GmshOption", "Help",
+    "Highlight", "Kind", "Label", "Loop", "Max", "Min", "Name", "NeverChanged", "Path",
+    "ReadOnly", "ReadOnlyRange", "ServerAction", "Step", "Units", "Visible",
+};
+
+bool contains(const auto& table, std::string_view word) {
+  return std::find(std::begin(table), std::end(table), word) != std::end(table);
+}
+
+}  // namespace
+
+Lexer::Lexer(std::string fileName, std::string_view text)
+    : fileName_(std::move(fileName)), text_(text) {
+  cursor_ = text_.c_str();
+  limit_ = cursor_ + text_.size();
+  lineStart_ = cursor_;
+  currentLocation_.initialize(&fileName_);
+  previousLocation_.initialize(&fileName_);
+}
+
+Parser::location_type Lexer::tokenLocation() const {
+  Parser::location_type where;
+  where.begin.filename = where.end.filename = &fileName_;
+  where.begin.line = line_;
+  where.begin.column = static_cast<int>(token_ - lineStart_) + 1;
+  where.end.line = line_;
+  where.end.column = static_cast<int>(cursor_ - lineStart_) + 1;
+  return where;
+}
+
+void Lexer::fail(const Parser::location_type& where, const std::string& message) const {
+  throw SyntaxError(SourceLocation{fileName_, where.begin.line, where.begin.column}, message);
+}
+
+void Lexer::countLines(const char* from, const char* to) {
+  for (const char* p = from; p < to; ++p) {
+    if (*p == '\n') {
+      ++line_;
+      lineStart_ = p + 1;
+    }
+  }
+}
+
+bool Lexer::nextNonSpaceIs(char c) const {
+  const char* p = cursor_;
+  while (p < limit_ && (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')) ++p;
+  return p < limit_ && *p == c;
+}
+
+Parser::symbol_type Lexer::next() {
+  Parser::symbol_type symbol = scan();
+  previousText_ = std::move(currentText_);
+  previousLocation_ = currentLocation_;
+  currentText_ = symbol.kind() == Parser::symbol_kind::S_YYEOF
+                     ? std::string("end of file")
+                     : std::string(token_, cursor_);
+  currentLocation_ = symbol.location;
+  return symbol;
+}
+
+Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& where) {
+  if (afterDot_) {
+    afterDot_ = false;
+    return Parser::make_IDENT(std::move(text), where);
+  }
+  if (text == "For") return Parser::make_FOR(where);
+  if (text == "EndFor") return Parser::make_ENDFOR(where);
+  if (text == "In") return Parser::make_IN(where);
+  if (text == "If") return Parser::make_IF(where);
+  if (text == "ElseIf") return Parser::make_ELSEIF(where);
+  if (text == "Else") return Parser::make_ELSE(where);
+  if (text == "EndIf") return Parser::make_ENDIF(where);
+  if (text == "Macro" || text == "Function") return Parser::make_MACRO(where);
+  if (text == "Return") return Parser::make_RETURN(where);
+  if (text == "Call") return Parser::make_CALL(where);
+  if (text == "Plugin") return Parser::make_PLUGIN(where);
+  if (text == "DefineConstant" || text == "DefineNumber" || text == "DefineString") {
+    defineAhead_ = true;
+    if (text == "DefineConstant") return Parser::make_DEFINECONSTANT(where);
+    if (text == "DefineNumber") return Parser::make_DEFINENUMBER(where);
+    return Parser::make_DEFINESTRING(where);
+  }
+  if (defineDepth_ > 0 && contains(kAttributeNames, text) && !nextNonSpaceIs('('))
+    return Parser::make_ATTR(std::move(text), where);
+  if (contains(kCommandWords, text)) return Parser::make_WORD(std::move(text), where);
+  if (contains(kTailWords, text)) return Parser::make_TAILWORD(std::move(text), where);
+  return Parser::make_IDENT(std::move(text), where);
+}
+
+Parser::symbol_type Lexer::number(const Parser::location_type& where) {
+  std::string digits(token_, cursor_);
+  std::replace_if(digits.begin(), digits.end(), [](char c) { return c == 'd' || c == 'D'; },
+                  'e');
+  double value = 0;
+  auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error == std::errc::result_out_of_range) fail(where, "number '" + digits + "' is out of range");
+  if (error != std::errc() || end != digits.data() + digits.size())
+    fail(where, "malformed number '" + digits + "'");
+  return Parser::make_NUMBER(value, where);
+}
+
+// A string literal keeps its characters as written, except that \" stands for a quote.
+Parser::symbol_type Lexer::quoted(const Parser::location_type& where) {
+  std::string value;
+  for (const char* p = token_ + 1; p < cursor_ - 1; ++p) {
+    if (*p == '\\' && p + 1 < cursor_ - 1 && p[1] == '"') ++p;
+    value += *p;
+  }
+  countLines(token_, cursor_);
+  return Parser::make_STRING(std::move(value), where);
+}
+
+Parser::symbol_type Lexer::punctuation(int token, const Parser::location_type& where) {
+  afterDot_ = token == '.';
+  if (token == '[') {
+    if (defineAhead_ || defineDepth_ > 0) ++defineDepth_;
+  } else if (token == ']' && defineDepth_ > 0) {
+    --defineDepth_;
+  }
+  defineAhead_ = false;
+  return Parser::symbol_type(token, where);
+}
+
+void Lexer::skipBlockComment(const Parser::location_type& where) {
+  std::string_view rest(cursor_, static_cast<std::size_t>(limit_ - cursor_));
+  auto close = rest.find("*/");
+  if (close == std::string_view::npos) fail(where, "unterminated block comment");
+  const char* end = cursor_ + close + 2;
+  countLines(cursor_, end);
+  cursor_ = end;
+}
+
+Parser::symbol_type Lexer::scan() {
+  for (;;) {
+    token_ = cursor_;
+    const char* marker = nullptr;
+    /*!re2c
+      re2c:api:style = free-form;
+      re2c:define:YYCTYPE = char;
+      re2c:define:YYCURSOR = cursor_;
+      re2c:define:YYMARKER = marker;
+      re2c:yyfill:enable = 0;
+
+      digit = [0-9];
+      exponent = [eEdD] [+-]? digit+;
+      number = digit+ exponent? | digit+ "." digit* exponent? | "." digit+ exponent?;
+      ident = [a-zA-Z_] [a-zA-Z0-9_]*;
+      string = ["] ([^"\\\x00] | "\\" [^\x00])* ["];
+
+      "\x00" {
+        if (cursor_ - 1 < limit_) fail(tokenLocation(), "unexpected NUL character");
+        cursor_ = limit_;
+        return Parser::make_YYEOF(tokenLocation());
+      }
+      [ \t\r\f\v]+ { continue; }
+      "\n" { countLines(token_, cursor_); continue; }
+      "//" [^\n\x00]* { continue; }
+      "/*" { skipBlockComment(tokenLocation()); continue; }
+      number { afterDot_ = false; defineAhead_ = false; return number(tokenLocation()); }
+      ident { auto where = tokenLocation(); return word(std::string(token_, cursor_), where); }
+      string { afterDot_ = false; return quoted(tokenLocation()); }
+      ["] { fail(tokenLocation(), "unterminated string"); }
+      "==" { return Parser::make_EQ(tokenLocation()); }
+      "!=" { return Parser::make_NE(tokenLocation()); }
+      "<=" { return Parser::make_LE(tokenLocation()); }
+      ">=" { return Parser::make_GE(tokenLocation()); }
+      "&&" { return Parser::make_AND(tokenLocation()); }
+      "||" { return Parser::make_OR(tokenLocation()); }
+      "++" { return Parser::make_INCR(tokenLocation()); }
+      "--" { return Parser::make_DECR(tokenLocation()); }
+      "+=" { return Parser::make_PLUSEQ(tokenLocation()); }
+      "-=" { return Parser::make_MINUSEQ(tokenLocation()); }
+      "*=" { return Parser::make_TIMESEQ(tokenLocation()); }
+      "/=" { return Parser::make_DIVEQ(tokenLocation()); }
+      ">>" { return Parser::make_APPEND(tokenLocation()); }
+      [-+*/%^()[\]{},;=<>!?:.#~] { return punctuation(static_cast<unsigned char>(*token_), tokenLocation()); }
+      * { fail(tokenLocation(), std::string("unexpected character '") + *token_ + "'"); }
+    */
+  }
+}
+
+}  // namespace geomesh

@@ -1,0 +1,15 @@
+#include "grammar/parse.h"
+
+#include "grammar/lexer.h"
+
+namespace geomesh {
+
+ast::StmtList parseScript(const std::string& fileName, std::string_view text) {
+  Lexer lexer(fileName, text);
+  ast::StmtList program;
+  Parser parser(lexer, program);
+  parser.parse();
+  return program;
+}
+
+}  // namespace geomesh

@@ -1,0 +1,37 @@
+#pragma once
+
+// Small builders used by the grammar actions in parser.y, kept here so the actions stay short.
+
+#include "grammar/ast.h"
+#include "grammar/parser.hpp"
+
+namespace geomesh {
+class Lexer;
+}
+
+namespace geomesh::grammar {
+
+SourceLocation at(const Parser::location_type& where);
+ast::ExprPtr makeExpr(ast::ExprKind kind, const Parser::location_type& where);
+ast::ExprPtr unary(std::string op, ast::ExprPtr operand, const Parser::location_type& where);
+ast::ExprPtr binary(std::string op, ast::ExprPtr left, ast::ExprPtr right,
+                    const Parser::location_type& where);
+// {a} stands for a itself; {a, b} for the list.
+ast::ExprPtr listOrSingle(ast::ExprList items, const Parser::location_type& where);
+
+template <class Node>
+ast::StmtPtr makeStmt(Node node, const Parser::location_type& where) {
+  auto stmt = std::make_unique<ast::Stmt>();
+  stmt->loc = at(where);
+  stmt->node = std::move(node);
+  return stmt;
+}
+
+ast::StmtPtr shapeCommand(ast::ExprPtr shape, const Parser::location_type& where);
+ast::StmtPtr forStmt(ast::Name variable, ast::ExprPtr range, ast::StmtList body,
+                     const Parser::location_type& where);
+
+// Throws a SyntaxError saying what was expected where, in words a user understands.
+[[noreturn]] void reportSyntaxError(const Lexer& lexer, const Parser::context& context);
+
+}  // namespace geomesh::grammar

@@ -1,0 +1,153 @@
+// Statements introduced by keywords: Printf, Include, Exit, options, and everything that is
+// recognised but not supported (reported with a warning at its location).
+#include <cmath>
+#include <fstream>
+#include <filesystem>
+
+#include "interpreter/diagnostics.h"
+#include "interpreter/script_interpreter.h"
+#include "interpreter/session.h"
+
+namespace geomesh {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string text;
+  for (const auto& word : words) text += (text.empty() ? "" : " ") + word;
+  return text;
+}
+
+// Statements that only concern the graphical interface or post-processing: batch runs
+// ignore them.
+bool isInterfaceOnly(const std::string& word) {
+  for (const char* w : {"Draw", "Hide", "Show", "Color", "View", "Sleep", "SetChanged", "Print",
+                        "BoundingBox", "PostProcessing", "Solver"})
+    if (word == w) return true;
+  return false;
+}
+
+bool isOptionCategory(std::string_view path) {
+  return path.starts_with("General.") || path.starts_with("Geometry.") ||
+         path.starts_with("Mesh.");
+}
+
+double combine(double old, double operand, const std::string& op) {
+  if (op == "+=") return old + operand;
+  if (op == "-=") return old - operand;
+  if (op == "*=") return old * operand;
+  if (op == "/=") return old / operand;
+  return operand;
+}
+
+}  // namespace
+
+void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLocation& where) {
+  const std::string& head = command.words.front();
+  if (head == "Printf" && command.words.size() == 1) return executePrintf(command, where);
+  if (head == "Include" && command.words.size() == 1) return executeInclude(command, where);
+  if (head == "Exit") throw ScriptExit();
+  if (head == "Abort") throw AbortScript();
+  if ((head == "Error" || head == "Warning") && command.argStyle == ast::CommandStmt::Args::Paren &&
+      !command.args.empty()) {
+    const std::string message = command.args.size() == 1 ? evaluateString(*command.args[0])
+                                                         : format(command.args, where);
+    if (head == "Error") fail(where, message);
+    return warn(where, message);
+  }
+  if (head == "SetNumber" || head == "SetString") return executeSetter(command, where);
+  if (executeGeometry(command, where)) return;
+  if (isInterfaceOnly(head)) {
+    session_.log().debug(where.file + ":" + std::to_string(where.line) + ": '" +
+                         joined(command.words) + "' has no effect in batch mode");
+    return;
+  }
+  if (head == "SetFactory" && command.args.size() == 1) {
+    const std::string factory = evaluateString(*command.args[0]);
+    if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
+  }
+  warn(where, "'" + joined(command.words) + "' is not supported yet; ignored");
+}
+
+void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.argStyle != ast::CommandStmt::Args::Paren || command.args.empty())
+    fail(where, "Printf takes a format string and values, as in Printf(\"x = %g\", x)");
+  const std::string line = command.args.size() == 1 ? evaluateString(*command.args[0])
+                                                    : format(command.args, where);
+  if (!command.redirectTarget) {
+    session_.out() << line << '\n';
+    return;
+  }
+  std::filesystem::path path = evaluateString(*command.redirectTarget);
+  if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
+  std::ofstream file(path, command.redirect == ">>" ? std::ios::app : std::ios::trunc);
+  if (!file) fail(command.redirectTarget->loc, "cannot write to '" + path.string() + "'");
+  file << line << '\n';
+}
+
+void Interpreter::executeSetter(const ast::CommandStmt& command, const SourceLocation& where) {
+  const std::string& head = command.words.front();
+  if (command.args.size() != 2) fail(where, "'" + head + "' takes a name and a value");
+  const std::string key = evaluateString(*command.args[0]);
+  if (head == "SetNumber") {
+    const double value = evaluateNumber(*command.args[1]);
+    if (session_.options().hasNumber(key))
+      session_.options().setNumber(key, value);
+    else
+      parameterNumbers_[key] = value;
+    return;
+  }
+  std::string value = evaluateString(*command.args[1]);
+  if (session_.options().hasString(key))
+    session_.options().setString(key, std::move(value));
+  else
+    parameterStrings_[key] = std::move(value);
+}
+
+void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
+                                      const SourceLocation& where) {
+  if (!isOptionCategory(assign.path) || assign.index) {
+    warn(where, "option '" + assign.path + "' is not supported yet; ignored");
+    return;
+  }
+  OptionRegistry& options = session_.options();
+  const auto* option = options.find(assign.path);
+  if (!option)
+    fail(where, "unknown option '" + assign.path + "'" +
+                    didYouMean(assign.path, options.suggestions(assign.path)));
+  const ast::Expr& rhs = *assign.value;
+  if (option->type == OptionType::Color && rhs.kind == ast::ExprKind::Variable &&
+      !variables_.contains(rhs.name.base)) {
+    session_.log().debug("colour names are ignored in batch mode");
+    return;
+  }
+  Value value = evaluate(rhs);
+  if (option->type == OptionType::String) {
+    if (value.kind() != Value::Kind::String || assign.op != "=")
+      fail(rhs.loc, "option '" + assign.path + "' takes a string");
+    options.setString(assign.path, value.strings()[0]);
+    return;
+  }
+  if (!value.isNumeric()) fail(rhs.loc, "option '" + assign.path + "' takes a number");
+  const auto& xs = value.numbers();
+  double number = xs.empty() ? 0 : xs[0];
+  if (option->type == OptionType::Color && xs.size() >= 3)
+    number = std::round(xs[0]) * 65536 + std::round(xs[1]) * 256 + std::round(xs[2]);
+  else if (xs.size() != 1)
+    fail(rhs.loc, "option '" + assign.path + "' takes a single number");
+  options.setNumber(assign.path, combine(options.number(assign.path), number, assign.op));
+}
+
+Value Interpreter::optionValue(const ast::Expr& expr) {
+  if (!isOptionCategory(expr.text) || !expr.args.empty())
+    fail(expr.loc, "reading option '" + expr.text + "' is not supported");
+  const OptionRegistry& options = session_.options();
+  const auto* option = options.find(expr.text);
+  if (!option)
+    fail(expr.loc, "unknown option '" + expr.text + "'" +
+                       didYouMean(expr.text, options.suggestions(expr.text)));
+  if (option->type == OptionType::String) return Value::string(option->text);
+  return Value::number(option->number);
+}
+
+}  // namespace geomesh

@@ -1,0 +1,190 @@
+#include "interpreter/interpreter.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "grammar/parse.h"
+#include "interpreter/diagnostics.h"
+#include "interpreter/script_interpreter.h"
+#include "interpreter/session.h"
+#include "stdlib/edit_distance.h"
+
+namespace geomesh {
+
+namespace {
+
+constexpr std::size_t kMaxLoopIterations = 10'000'000;
+constexpr int kMaxCallDepth = 200;
+
+std::optional<std::string> readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+void runScriptFile(Session& session, const std::string& path) {
+  Interpreter(session).runFile(path);
+}
+
+void runScriptText(Session& session, const std::string& text, const std::string& name) {
+  Interpreter(session).runText(text, name);
+}
+
+Interpreter::Interpreter(Session& session) : session_(session) {}
+
+void Interpreter::runFile(const std::string& path) {
+  auto text = readFile(path);
+  if (!text) throw ScriptError(SourceLocation{path, 1, 1}, "cannot open file '" + path + "'", "");
+  runText(*text, path);
+}
+
+void Interpreter::runText(const std::string& text, const std::string& name) {
+  std::error_code ignored;
+  includeStack_.push_back(std::filesystem::weakly_canonical(name, ignored).string());
+  try {
+    runSource(name, text);
+  } catch (const AbortScript&) {
+  }
+  includeStack_.pop_back();
+}
+
+void Interpreter::runSource(const std::string& name, std::string text) {
+  sources_.push_back(SourceFile{name, std::move(text)});
+  try {
+    programs_.push_back(parseScript(name, sources_.back().text));
+  } catch (const SyntaxError& error) {
+    fail(error.location(), error.what());
+  }
+  execute(programs_.back());
+}
+
+void Interpreter::execute(const ast::StmtList& statements) {
+  for (const auto& statement : statements) execute(*statement);
+}
+
+void Interpreter::execute(const ast::Stmt& statement) {
+  const SourceLocation& where = statement.loc;
+  std::visit(
+      [&](const auto& node) {
+        using Node = std::decay_t<decltype(node)>;
+        if constexpr (std::is_same_v<Node, ast::AssignStmt>) executeAssign(node, where);
+        if constexpr (std::is_same_v<Node, ast::OptionAssignStmt>) executeOptionAssign(node, where);
+        if constexpr (std::is_same_v<Node, ast::CommandStmt>) executeCommand(node, where);
+        if constexpr (std::is_same_v<Node, ast::ForStmt>) executeFor(node, where);
+        if constexpr (std::is_same_v<Node, ast::IfStmt>) executeIf(node);
+        if constexpr (std::is_same_v<Node, ast::MacroStmt>) macros_[node.name] = &node.body;
+        if constexpr (std::is_same_v<Node, ast::CallStmt>) executeCall(node, where);
+        if constexpr (std::is_same_v<Node, ast::DefineConstantStmt>) executeDefineConstant(node);
+        if constexpr (std::is_same_v<Node, ast::PluginStmt>)
+          warn(where, "'Plugin(" + node.plugin + ")' is not supported yet; ignored");
+      },
+      statement.node);
+}
+
+void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& where) {
+  std::vector<double> values = evaluateNumbers(*loop.range);
+  if (values.size() > kMaxLoopIterations)
+    fail(where, "loop has " + std::to_string(values.size()) + " iterations, more than the limit of " +
+                    std::to_string(kMaxLoopIterations));
+  const std::string variable = loop.variable.base.empty() ? "" : resolveName(loop.variable);
+  for (double value : values) {
+    if (!variable.empty()) variables_[variable] = Value::number(value);
+    execute(loop.body);
+  }
+}
+
+void Interpreter::executeIf(const ast::IfStmt& branches) {
+  for (const auto& branch : branches.branches) {
+    if (evaluateNumber(*branch.condition) != 0) {
+      execute(branch.body);
+      return;
+    }
+  }
+  execute(branches.elseBody);
+}
+
+void Interpreter::executeCall(const ast::CallStmt& call, const SourceLocation& where) {
+  const ast::Expr& expr = *call.name;
+  std::string name;
+  if (expr.kind == ast::ExprKind::Variable && expr.name.suffixes.empty() &&
+      !variables_.contains(expr.name.base))
+    name = expr.name.base;
+  else
+    name = evaluateString(expr);
+  auto macro = macros_.find(name);
+  if (macro == macros_.end()) {
+    std::vector<std::string> known;
+    for (const auto& [macroName, body] : macros_) known.push_back(macroName);
+    fail(expr.loc, "unknown macro '" + name + "'" + didYouMean(name, known));
+  }
+  if (callDepth_ >= kMaxCallDepth)
+    fail(where, "macro calls nested deeper than " + std::to_string(kMaxCallDepth) +
+                    " (endless recursion of '" + name + "'?)");
+  ++callDepth_;
+  try {
+    execute(*macro->second);
+  } catch (...) {
+    --callDepth_;
+    throw;
+  }
+  --callDepth_;
+}
+
+std::string Interpreter::directoryOf(const std::string& file) const {
+  return std::filesystem::path(file).parent_path().string();
+}
+
+void Interpreter::executeInclude(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.args.size() != 1) fail(where, "Include takes one file name");
+  std::filesystem::path path = evaluateString(*command.args[0]);
+  if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
+  const std::string shown = path.lexically_normal().string();
+  std::error_code ignored;
+  const std::string canonical = std::filesystem::weakly_canonical(path, ignored).string();
+  for (const auto& open : includeStack_)
+    if (open == canonical) fail(command.args[0]->loc, "include cycle: '" + shown + "' is already being read");
+  auto text = readFile(shown);
+  if (!text || std::filesystem::is_directory(path))
+    fail(command.args[0]->loc, "cannot open include file '" + shown + "'");
+  includeStack_.push_back(canonical);
+  try {
+    runSource(shown, std::move(*text));
+  } catch (ScriptError& error) {
+    includeStack_.pop_back();
+    error.addIncludedFrom(where);
+    throw;
+  } catch (...) {
+    includeStack_.pop_back();
+    throw;
+  }
+  includeStack_.pop_back();
+}
+
+void Interpreter::fail(const SourceLocation& where, const std::string& message) const {
+  std::string_view line;
+  for (auto it = sources_.rbegin(); it != sources_.rend(); ++it) {
+    if (it->name == where.file) {
+      line = it->lineText(where.line);
+      break;
+    }
+  }
+  throw ScriptError(where, message, line);
+}
+
+void Interpreter::warn(const SourceLocation& where, const std::string& message) const {
+  session_.log().warning(where.file + ":" + std::to_string(where.line) + ":" +
+                         std::to_string(where.column) + ": warning: " + message);
+}
+
+std::string Interpreter::didYouMean(std::string_view name,
+                                    const std::vector<std::string>& candidates) const {
+  auto close = closestNames(name, candidates, 1);
+  return close.empty() ? std::string() : "; did you mean '" + close.front() + "'?";
+}
+
+}  // namespace geomesh

@@ -1,0 +1,105 @@
+#pragma once
+
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grammar/ast.h"
+#include "interpreter/value.h"
+#include "stdlib/math_functions.h"
+
+namespace geomesh {
+
+class Session;
+
+// Walks the AST of a script and its Includes, keeping the variables, macros and source texts
+// of one run. The member functions are spread over files by concern: statements
+// (interpreter.cpp), expressions (evaluator.cpp), built-in functions (builtin_calls.cpp),
+// commands (commands.cpp), geometry (geometry_commands.cpp), parameters (parameters.cpp).
+class Interpreter {
+ public:
+  explicit Interpreter(Session& session);
+
+  void runFile(const std::string& path);
+  void runText(const std::string& text, const std::string& name);
+
+ private:
+  struct AbortScript {};  // thrown by `Abort;`
+
+  // statements
+  void runSource(const std::string& name, std::string text);
+  void execute(const ast::StmtList& statements);
+  void execute(const ast::Stmt& statement);
+  void executeAssign(const ast::AssignStmt& assign, const SourceLocation& where);
+  void assignElements(const ast::LValue& target, const std::string& name, const Value& value,
+                      const std::string& op, const SourceLocation& where);
+  void executeFor(const ast::ForStmt& loop, const SourceLocation& where);
+  void executeIf(const ast::IfStmt& branches);
+  void executeCall(const ast::CallStmt& call, const SourceLocation& where);
+  void executeInclude(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeOptionAssign(const ast::OptionAssignStmt& assign, const SourceLocation& where);
+
+  // expressions
+  Value evaluate(const ast::Expr& expr);
+  double evaluateNumber(const ast::Expr& expr);
+  std::string evaluateString(const ast::Expr& expr);
+  std::vector<double> evaluateNumbers(const ast::Expr& expr);
+  std::vector<double> evaluateNumbers(const ast::ExprList& items);
+  std::string resolveName(const ast::Name& name);
+  Value variableValue(const ast::Expr& expr);
+  const Value& requireVariable(const std::string& name, const SourceLocation& where);
+  Value elementValue(const ast::Expr& expr);
+  Value listValue(const ast::ExprList& items, const SourceLocation& where);
+  std::vector<double> rangeValues(const ast::Expr& range);
+  Value unaryValue(const ast::Expr& expr);
+  Value binaryValue(const ast::Expr& expr);
+  Value optionValue(const ast::Expr& expr);
+  Value shapeValue(const ast::Expr& expr);
+
+  // built-in functions and constants
+  Value callFunction(const ast::Expr& call);
+  std::optional<Value> callStringFunction(const ast::Expr& call);
+  std::optional<Value> callListFunction(const ast::Expr& call);
+  std::optional<Value> callQueryFunction(const ast::Expr& call);
+  std::optional<Value> builtinConstant(std::string_view name);
+  std::string format(const ast::ExprList& args, const SourceLocation& where);
+
+  // commands
+  void executeCommand(const ast::CommandStmt& command, const SourceLocation& where);
+  void executePrintf(const ast::CommandStmt& command, const SourceLocation& where);
+  bool executeGeometry(const ast::CommandStmt& command, const SourceLocation& where);
+  void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
+  int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
+  std::vector<int> entityTags(const ast::Expr& list);
+  void executeSetter(const ast::CommandStmt& command, const SourceLocation& where);
+
+  // parameters (DefineConstant, DefineNumber, DefineString)
+  void executeDefineConstant(const ast::DefineConstantStmt& define);
+  Value defineNumber(const ast::Expr& expr);
+  Value defineString(const ast::Expr& expr);
+  std::optional<std::string> parameterName(const std::vector<ast::Attribute>& attributes);
+
+  // diagnostics
+  [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const;
+  void warn(const SourceLocation& where, const std::string& message) const;
+  std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) const;
+  std::string directoryOf(const std::string& file) const;
+
+  Session& session_;
+  std::map<std::string, Value> variables_;
+  std::map<std::string, const ast::StmtList*> macros_;
+  std::map<std::string, double> parameterNumbers_;
+  std::map<std::string, std::string> parameterStrings_;
+  std::deque<SourceFile> sources_;
+  std::deque<ast::StmtList> programs_;  // kept alive: macros point into them
+  std::vector<std::string> includeStack_;
+  std::map<std::pair<int, std::string>, int> physicalNames_;  // (dim, name) -> tag
+  int maxPhysicalTag_ = 0;
+  int callDepth_ = 0;
+  RandomEngine random_;
+};
+
+}  // namespace geomesh

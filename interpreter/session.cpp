@@ -1,0 +1,46 @@
+#include "interpreter/session.h"
+
+#include <iostream>
+
+#include "interpreter/interpreter.h"
+#include "mesh/generate.h"
+
+namespace geomesh {
+
+Session::Session(MessageSink& log) : Session(log, std::cout) {}
+
+Session::Session(MessageSink& log, std::ostream& out) : log_(log), out_(out) {}
+
+Session::~Session() = default;
+
+void Session::runFile(const std::string& path) { runScriptFile(*this, path); }
+
+void Session::runText(const std::string& text, const std::string& fileName) {
+  runScriptText(*this, text, fileName);
+}
+
+void Session::synchronize() { geo_.synchronize(model_); }
+
+MeshOptions Session::meshOptions() const {
+  MeshOptions m;
+  const OptionRegistry& o = options_;
+  m.sizeMin = o.number("Mesh.MeshSizeMin");
+  m.sizeMax = o.number("Mesh.MeshSizeMax");
+  m.sizeFactor = o.number("Mesh.MeshSizeFactor");
+  m.sizeFromPoints = o.number("Mesh.MeshSizeFromPoints") != 0;
+  m.sizeExtendFromBoundary = o.number("Mesh.MeshSizeExtendFromBoundary") != 0;
+  m.algorithm2D = static_cast<int>(o.number("Mesh.Algorithm"));
+  m.algorithm3D = static_cast<int>(o.number("Mesh.Algorithm3D"));
+  m.smoothing = static_cast<int>(o.number("Mesh.Smoothing"));
+  m.elementOrder = static_cast<int>(o.number("Mesh.ElementOrder"));
+  m.numThreads = static_cast<int>(o.number("General.NumThreads"));
+  m.randomFactor = o.number("Mesh.RandomFactor");
+  return m;
+}
+
+void Session::generate(int dim) {
+  synchronize();
+  generateMesh(model_, meshOptions(), dim, mesh_, log_);
+}
+
+}  // namespace geomesh

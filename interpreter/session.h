@@ -1,0 +1,62 @@
+#pragma once
+
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "kernel/geo/geo_factory.h"
+#include "kernel/messages.h"
+#include "kernel/model.h"
+#include "mesh/mesh.h"
+#include "mesh/mesh_options.h"
+#include "stdlib/options.h"
+
+namespace geomesh {
+
+// Everything one run owns: options, the geometry factories, the model, the mesh, and where
+// messages and script output go. No global state: several sessions can coexist.
+class Session {
+ public:
+  explicit Session(MessageSink& log);
+  Session(MessageSink& log, std::ostream& out);
+  ~Session();
+
+  OptionRegistry& options() { return options_; }
+  const OptionRegistry& options() const { return options_; }
+  GeoFactory& geo() { return geo_; }
+  Model& model() { return model_; }
+  const Model& model() const { return model_; }
+  Mesh& mesh() { return mesh_; }
+  const Mesh& mesh() const { return mesh_; }
+  MessageSink& log() { return log_; }
+  std::ostream& out() { return out_; }  // what scripts print (Printf)
+
+  // Values given by -setnumber / -setstring: they override DefineConstant / DefineNumber /
+  // DefineString of the same name.
+  std::map<std::string, double>& numberOverrides() { return numberOverrides_; }
+  std::map<std::string, std::string>& stringOverrides() { return stringOverrides_; }
+
+  // Parses and evaluates a script; throws ScriptError (file:line:col diagnostics).
+  void runFile(const std::string& path);
+  void runText(const std::string& text, const std::string& fileName);
+
+  // Rebuilds the model from the built-in factory.
+  void synchronize();
+  // The Mesh.* options, as the generators read them.
+  MeshOptions meshOptions() const;
+  // Synchronizes, then meshes up to `dim`; throws MeshError.
+  void generate(int dim);
+
+ private:
+  MessageSink& log_;
+  std::ostream& out_;
+  OptionRegistry options_;
+  GeoFactory geo_;
+  Model model_;
+  Mesh mesh_;
+  std::map<std::string, double> numberOverrides_;
+  std::map<std::string, std::string> stringOverrides_;
+};
+
+}  // namespace geomesh

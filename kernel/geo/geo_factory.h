@@ -1,0 +1,79 @@
+#pragma once
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/model.h"
+
+namespace geomesh {
+
+// The built-in geometry kernel (the default factory of .geo scripts). Entities are defined
+// one call at a time, as a script states them, and checked immediately (an undefined point or
+// curve throws GeometryError naming its tag); synchronize() builds the Model from them.
+class GeoFactory {
+ public:
+  void addPoint(int tag, Vec3 xyz, double meshSize);
+  void addLine(int tag, int startPoint, int endPoint);
+  // A closed chain of curves; signed tags (negative: reversed). Curves given in any order
+  // and orientation are chained as the built-in kernel does; a loop that does not close
+  // throws, naming the gap.
+  void addCurveLoop(int tag, std::vector<int> curves);
+  // First loop: outer boundary; others: holes.
+  void addPlaneSurface(int tag, std::vector<int> curveLoops);
+  void addSurfaceLoop(int tag, std::vector<int> surfaces);
+  void addVolume(int tag, std::vector<int> surfaceLoops);
+  // Creates the group or, if (dim, tag) exists, appends to it. An empty name keeps the old one.
+  void addPhysicalGroup(int dim, int tag, const std::string& name, const std::vector<int>& entities);
+
+  bool hasPoint(int tag) const;
+  Vec3 pointCoordinates(int tag) const;  // throws if undefined
+  // Largest tag in use; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
+  // 0 when none.
+  int maxTag(int kind) const;
+  enum : int { kCurveLoop = 4, kSurfaceLoop = 5 };
+
+  // Geometry.Tolerance: coincident points and non-planar plane surfaces are detected
+  // relative to this fraction of the model's size (the diagonal of its bounding box).
+  void setTolerance(double relativeTolerance) { tolerance_ = relativeTolerance; }
+  double tolerance() const { return tolerance_; }
+
+  // Replaces the model's geometry with this factory's entities.
+  void synchronize(Model& model) const;
+  void clear();
+
+ private:
+  struct Curve {
+    int tag;
+    int start, end;
+    enum class Kind { Line } kind = Kind::Line;
+  };
+  struct Surface {
+    int tag;
+    std::vector<int> loops;
+    std::shared_ptr<const SurfaceGeometry> geometry;
+  };
+  struct Volume {
+    int tag;
+    std::vector<int> shells;
+  };
+  std::map<int, ModelPoint> points_;
+  std::map<int, Curve> curves_;
+  std::map<int, std::vector<int>> curveLoops_;
+  std::map<int, Surface> surfaces_;
+  std::map<int, std::vector<int>> surfaceLoops_;
+  std::map<int, Volume> volumes_;
+  std::map<EntityId, PhysicalGroup> physicals_;
+  double tolerance_ = 1e-8;
+
+  double absoluteTolerance() const;
+  std::array<int, 2> curveEnds(int signedCurve) const;
+  std::vector<int> loopCurves(int signedLoop) const;
+  std::shared_ptr<const SurfaceGeometry> fitPlaneSurface(int tag,
+                                                       const std::vector<int>& loops) const;
+  void checkShellClosed(int tag, const std::vector<int>& surfaces) const;
+};
+
+}  // namespace geomesh

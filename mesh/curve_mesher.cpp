@@ -1,0 +1,159 @@
+#include "mesh/curve_mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "mesh/generate.h"
+
+namespace geomesh {
+namespace {
+
+// Arc length of the curve over [a, b] by 5-point Gauss-Legendre quadrature.
+double arcLength(const CurveGeometry& g, double a, double b) {
+  static constexpr double kX[5] = {0.0, -0.5384693101056831, 0.5384693101056831,
+                                   -0.9061798459386640, 0.9061798459386640};
+  static constexpr double kW[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                                   0.2369268850561891, 0.2369268850561891};
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  double sum = 0;
+  for (int i = 0; i < 5; ++i) sum += kW[i] * norm(g.firstDerivative(mid + half * kX[i]));
+  return sum * half;
+}
+
+// Cumulative arc length at evenly spaced parameters, and its inverse.
+class ArcLengthTable {
+ public:
+  ArcLengthTable(const CurveGeometry& g, Interval range) : g_(g), range_(range) {
+    s_.push_back(0);
+    for (int k = 0; k < kPieces; ++k)
+      s_.push_back(s_.back() + arcLength(g, param(k), param(k + 1)));
+  }
+  double length() const { return s_.back(); }
+
+  // The parameter at arc length sigma: bracket in the table, then Newton steps.
+  double parameterAt(double sigma) const {
+    const auto it = std::upper_bound(s_.begin(), s_.end(), sigma);
+    const int k = std::clamp(static_cast<int>(it - s_.begin()) - 1, 0, kPieces - 1);
+    const double t0 = param(k), t1 = param(k + 1);
+    const double piece = s_[k + 1] - s_[k];
+    double t = piece > 0 ? t0 + (t1 - t0) * (sigma - s_[k]) / piece : t0;
+    for (int step = 0; step < 3; ++step) {
+      const double speed = norm(g_.firstDerivative(t));
+      if (!(speed > 0)) break;
+      t = std::clamp(t - (s_[k] + arcLength(g_, t0, t) - sigma) / speed, t0, t1);
+    }
+    return t;
+  }
+
+ private:
+  static constexpr int kPieces = 64;
+  double param(int k) const {
+    return range_.min + (range_.max - range_.min) * static_cast<double>(k) / kPieces;
+  }
+  const CurveGeometry& g_;
+  Interval range_;
+  std::vector<double> s_;
+};
+
+// The integral of 1/size along the arc length, sampled on a uniform grid (Simpson's rule on
+// each cell), and its inverse.
+class SizeIntegral {
+ public:
+  SizeIntegral(double length, double startSize, double endSize, const SizeRules& rules)
+      : length_(length), h0_(startSize), h1_(endSize), rules_(rules) {
+    const double dx = length / kCells;
+    cumulative_.push_back(0);
+    for (int k = 0; k < kCells; ++k) {
+      const double a = k * dx, b = a + dx;
+      const double cell = dx / 6 * (1 / size(a) + 4 / size(0.5 * (a + b)) + 1 / size(b));
+      cumulative_.push_back(cumulative_.back() + cell);
+    }
+  }
+  double total() const { return cumulative_.back(); }
+  double size(double sigma) const {
+    const double f = length_ > 0 ? sigma / length_ : 0;
+    return rules_.finish(h0_ + (h1_ - h0_) * f);
+  }
+  // The arc length where the integral reaches `value`.
+  double arcLengthAt(double value) const {
+    const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), value);
+    const int k = std::clamp(static_cast<int>(it - cumulative_.begin()) - 1, 0, kCells - 1);
+    const double cell = cumulative_[k + 1] - cumulative_[k];
+    const double f = cell > 0 ? (value - cumulative_[k]) / cell : 0;
+    return (k + f) * length_ / kCells;
+  }
+
+ private:
+  static constexpr int kCells = 2048;
+  double length_, h0_, h1_;
+  const SizeRules& rules_;
+  std::vector<double> cumulative_;
+};
+
+int segmentCount(double integral, bool closed) {
+  // Rounded up, except that up to 1% above a whole number is forgiven.
+  const int n = static_cast<int>(std::floor(integral + 0.99));
+  return std::max(n, closed ? 3 : 1);
+}
+
+}  // namespace
+
+NodeIndex pointNode(const Mesh& mesh, int pointTag) {
+  const EntityMesh* m = mesh.find({0, pointTag});
+  if (!m || m->nodes.empty()) throw MeshError({0, pointTag}, "point has no mesh node");
+  return m->nodes.front();
+}
+
+void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
+               std::vector<double>& nodeSizes) {
+  const EntityId id{1, curve.tag};
+  const ModelPoint* start = model.point(curve.startPoint);
+  const ModelPoint* end = model.point(curve.endPoint);
+  if (!start || !end) throw MeshError(id, "curve has no end points");
+  if (!curve.geometry) throw MeshError(id, "curve has no geometry");
+  const CurveGeometry& g = *curve.geometry;
+  const Interval range = g.range();
+  const bool closed = curve.startPoint == curve.endPoint;
+
+  const ArcLengthTable arc(g, range);
+  const SizeIntegral integral(arc.length(), rules.pointSize(*start), rules.pointSize(*end), rules);
+  if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
+  const int segments = segmentCount(integral.total(), closed);
+
+  EntityMesh& em = mesh.entity(id);
+  em.nodes.clear();
+  em.parametric.clear();
+  em.blocks.clear();
+  std::vector<NodeIndex> chain{pointNode(mesh, curve.startPoint)};
+  for (int k = 1; k < segments; ++k) {
+    const double sigma = integral.arcLengthAt(integral.total() * k / segments);
+    const double t = arc.length() > 0
+                         ? arc.parameterAt(sigma)
+                         : range.min + (range.max - range.min) * k / segments;
+    const NodeIndex node = mesh.addNode(g.point(t));
+    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
+    nodeSizes[node] = integral.size(sigma);
+    em.nodes.push_back(node);
+    em.parametric.push_back(t);
+    chain.push_back(node);
+  }
+  chain.push_back(pointNode(mesh, curve.endPoint));
+  ElementBlock& lines = em.block(ElementType::Line2);
+  for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+    lines.nodes.insert(lines.nodes.end(), {chain[k], chain[k + 1]});
+}
+
+std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int signedTag) {
+  const int tag = std::abs(signedTag);
+  const ModelCurve* curve = model.curve(tag);
+  const EntityMesh* em = mesh.find({1, tag});
+  if (!curve || !em) throw MeshError({1, tag}, "curve has no mesh");
+  std::vector<NodeIndex> chain{pointNode(mesh, curve->startPoint)};
+  chain.insert(chain.end(), em->nodes.begin(), em->nodes.end());
+  chain.push_back(pointNode(mesh, curve->endPoint));
+  if (signedTag < 0) std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
+}  // namespace geomesh

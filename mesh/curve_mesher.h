@@ -1,0 +1,27 @@
+#pragma once
+
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/mesh.h"
+#include "mesh/size_rules.h"
+
+namespace geomesh {
+
+// Meshes one curve whose end points are already meshed (generateMesh's 0D stage). The target
+// size varies linearly in arc length between the sizes of the end points (SizeRules); the
+// curve gets max(1, the integral of 1/size, rounded up unless within 1% below) segments, at
+// least 3 when closed, and its nodes split that integral into equal parts. Adds the interior
+// nodes with their parameters and the Line2 elements from start to end; nodeSizes (indexed
+// by node) receives the target size at each new node.
+void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
+               std::vector<double>& nodeSizes);
+
+// The node of a meshed model point; throws MeshError if the point has no mesh.
+NodeIndex pointNode(const Mesh& mesh, int pointTag);
+
+// The nodes of a meshed curve from start to end (both end points included), reversed when
+// `signedTag` is negative.
+std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int signedTag);
+
+}  // namespace geomesh

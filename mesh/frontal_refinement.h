@@ -1,0 +1,22 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh/delaunay2d.h"
+
+namespace geomesh {
+
+// Frontal-Delaunay refinement (after Rebay, J. Comput. Phys. 106, 1993) of a constrained
+// Delaunay triangulation. Triangles whose circumradius fits the target size are accepted; the
+// others that touch the front (a constrained edge or an accepted triangle) get a new point
+// on the perpendicular bisector of their front edge, placed to make a near-equilateral
+// triangle of the target size, and inserted by Bowyer-Watson. Larger triangles go first.
+//
+// `inside` flags the triangles of the domain (classifyInside), `sizes` holds the target size
+// at each vertex; both grow with the triangulation. New points get the size interpolated
+// linearly from the triangle they fall in, so sizes extend from the boundary inwards.
+void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
+                   std::vector<double>& sizes);
+
+}  // namespace geomesh

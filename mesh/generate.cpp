@@ -1,0 +1,89 @@
+#include "mesh/generate.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "mesh/curve_mesher.h"
+#include "mesh/mesh_check.h"
+#include "mesh/size_rules.h"
+#include "mesh/surface_mesher.h"
+#include "mesh/volume_mesher.h"
+
+namespace geomesh {
+namespace {
+
+std::string entityName(EntityId e) {
+  static constexpr const char* kNames[4] = {"point", "curve", "surface", "volume"};
+  const char* name = e.dim >= 0 && e.dim < 4 ? kNames[e.dim] : "entity";
+  return std::string(name) + " " + std::to_string(e.tag);
+}
+
+// Reports "Meshing <dim>D... done (<seconds> s, <count> <elements>)" when it goes out of scope
+// normally.
+class StageTimer {
+ public:
+  explicit StageTimer(int dim) : dim_(dim), start_(std::chrono::steady_clock::now()) {}
+  void done(MessageSink& log, std::size_t count, const char* what) const {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    char line[128];
+    std::snprintf(line, sizeof line, "Meshing %dD... done (%.3g s, %zu %s)", dim_, seconds, count,
+                  what);
+    log.info(line);
+  }
+
+ private:
+  int dim_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+void meshPoints(const Model& model, const SizeRules& rules, Mesh& mesh,
+                std::vector<double>& nodeSizes) {
+  for (const auto& [tag, point] : model.points()) {
+    const NodeIndex node = mesh.addNode(point.xyz);
+    nodeSizes.push_back(rules.finish(rules.pointSize(point)));
+    EntityMesh& em = mesh.entity({0, tag});
+    em.nodes.push_back(node);
+    em.block(ElementType::Point1).nodes.push_back(node);
+  }
+}
+
+void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRules& rules,
+                  Mesh& mesh, std::vector<double>& nodeSizes) {
+  for (const auto& [tag, surface] : model.surfaces())
+    meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  for (const MeshProblem& problem : report.problems)
+    if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
+}
+
+}  // namespace
+
+MeshError::MeshError(EntityId e, const std::string& reason)
+    : std::runtime_error("cannot mesh " + entityName(e) + ": " + reason), entity(e) {}
+
+void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
+                  MessageSink& log) {
+  mesh.clear();
+  const SizeRules rules = SizeRules::from(model, options);
+  std::vector<double> nodeSizes;  // target size at each node, read by the next dimension
+  meshPoints(model, rules, mesh, nodeSizes);
+  if (dim >= 1) {
+    const StageTimer timer(1);
+    for (const auto& [tag, curve] : model.curves()) meshCurve(model, curve, rules, mesh, nodeSizes);
+    timer.done(log, mesh.elementCount(1), "lines");
+  }
+  if (dim >= 2) {
+    const StageTimer timer(2);
+    meshSurfaces(model, options, rules, mesh, nodeSizes);
+    timer.done(log, mesh.elementCount(2), "triangles");
+  }
+  if (dim >= 3) {
+    const StageTimer timer(3);
+    for (const auto& [tag, volume] : model.volumes()) meshVolume(model, options, tag, mesh);
+    timer.done(log, mesh.elementCount(3), "tetrahedra");
+  }
+}
+
+}  // namespace geomesh

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "kernel/model.h"
+#include "mesh/io/msh_content.h"
+#include "mesh/io/msh_encoder.h"
+#include "mesh/mesh.h"
+
+namespace geomesh {
+
+// The sections of MSH files, shared by the writers of each version.
+void writeMeshFormat(MshEncoder& out, const char* version);
+// Binary data is followed by a line break before the end marker.
+void endSection(MshEncoder& out, const char* endMarker);
+void writePhysicalNames(MshEncoder& out, const Model& model);  // only when some have names
+
+void writeMsh41Body(MshEncoder& out, const Model& model, const Mesh& mesh,
+                    const MshContent& content);
+void writeMsh22Body(MshEncoder& out, const Model& model, const Mesh& mesh,
+                    const MshContent& content, bool saveAll);
+
+}  // namespace geomesh

@@ -1,0 +1,285 @@
+#include "mesh/mesh_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <tuple>
+
+namespace geomesh {
+namespace {
+
+constexpr std::size_t kMaxProblemsPerCheck = 10;
+
+std::string nodeName(NodeIndex n) { return "node " + std::to_string(n + 1); }
+
+std::string edgeName(NodeIndex a, NodeIndex b) {
+  return "edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ")";
+}
+
+std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
+  return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+}
+
+class Checker {
+ public:
+  Checker(const Model& model, const Mesh& mesh) : model_(model), mesh_(mesh) {
+    const BoundingBox box = model.boundingBox();
+    const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
+    tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
+  }
+
+  MeshCheckReport run() {
+    checkIndicesAndOwnership();
+    checkDuplicates();
+    for (const auto& [tag, curve] : model_.curves()) checkCurve(curve);
+    for (const auto& [tag, surface] : model_.surfaces()) checkSurface(surface);
+    checkVolumes();
+    return std::move(report_);
+  }
+
+ private:
+  void problem(EntityId e, std::string message) {
+    report_.problems.push_back({e, std::move(message)});
+  }
+
+  void checkIndicesAndOwnership() {
+    std::vector<std::uint8_t> owners(mesh_.nodeCount(), 0);
+    for (const auto& [id, em] : mesh_.entities()) {
+      std::size_t reported = 0;
+      for (NodeIndex n : em.nodes) {
+        if (n >= mesh_.nodeCount()) {
+          if (reported++ < kMaxProblemsPerCheck) problem(id, nodeName(n) + " does not exist");
+        } else if (++owners[n] == 2 && reported++ < kMaxProblemsPerCheck) {
+          problem(id, nodeName(n) + " also belongs to another entity");
+        }
+      }
+      for (const ElementBlock& block : em.blocks)
+        for (NodeIndex n : block.nodes)
+          if (n >= mesh_.nodeCount() && reported++ < kMaxProblemsPerCheck)
+            problem(id, std::string(elementName(block.type)) + " uses missing " + nodeName(n));
+    }
+    std::size_t orphans = 0;
+    for (std::size_t n = 0; n < owners.size(); ++n)
+      if (owners[n] == 0 && orphans++ < kMaxProblemsPerCheck)
+        problem({-1, 0}, nodeName(static_cast<NodeIndex>(n)) + " belongs to no entity");
+  }
+
+  // Nodes rounded to a grid of the tolerance's size; equal cells are duplicates.
+  void checkDuplicates() {
+    using Cell = std::tuple<long long, long long, long long, NodeIndex>;
+    std::vector<Cell> cells;
+    cells.reserve(mesh_.nodeCount());
+    for (NodeIndex n = 0; n < mesh_.nodeCount(); ++n) {
+      const Vec3 p = mesh_.node(n);
+      cells.emplace_back(std::llround(p.x / tolerance_), std::llround(p.y / tolerance_),
+                         std::llround(p.z / tolerance_), n);
+    }
+    std::sort(cells.begin(), cells.end());
+    std::size_t reported = 0;
+    for (std::size_t k = 1; k < cells.size(); ++k) {
+      const auto& [x0, y0, z0, n0] = cells[k - 1];
+      const auto& [x1, y1, z1, n1] = cells[k];
+      if (x0 == x1 && y0 == y1 && z0 == z1 && reported++ < kMaxProblemsPerCheck)
+        problem({-1, 0}, nodeName(n0) + " and " + nodeName(n1) + " coincide");
+    }
+  }
+
+  void checkCurve(const ModelCurve& curve) {
+    const EntityId id{1, curve.tag};
+    const EntityMesh* em = mesh_.find(id);
+    if (!em) return;  // not meshed (dimension 0 only)
+    const ElementBlock* lines = em->findBlock(ElementType::Line2);
+    const EntityMesh* start = mesh_.find({0, curve.startPoint});
+    const EntityMesh* end = mesh_.find({0, curve.endPoint});
+    if (!lines || lines->size() == 0) return problem(id, "has no line elements");
+    if (!start || !end || start->nodes.empty() || end->nodes.empty())
+      return problem(id, "end points have no mesh nodes");
+    if (lines->nodes.front() != start->nodes.front() || lines->nodes.back() != end->nodes.front())
+      problem(id, "line elements do not start and end at the curve's end points");
+    for (std::size_t e = 1; e < lines->size(); ++e)
+      if (lines->element(e)[0] != lines->element(e - 1)[1])
+        return problem(id, "line elements do not form a chain");
+    if (!curve.geometry || em->parametric.size() != em->nodes.size()) return;
+    std::size_t reported = 0;
+    for (std::size_t k = 0; k < em->nodes.size(); ++k) {
+      const double d = distance(curve.geometry->point(em->parametric[k]), mesh_.node(em->nodes[k]));
+      if (!(d <= tolerance_) && reported++ < kMaxProblemsPerCheck)
+        problem(id, nodeName(em->nodes[k]) + " lies off the curve (distance " +
+                        std::to_string(d) + ")");
+    }
+  }
+
+  // Boundary segments of the surface with the number of triangles each must border.
+  std::vector<std::pair<std::uint64_t, int>> expectedBoundary(const ModelSurface& surface) const {
+    std::vector<std::pair<std::uint64_t, int>> expected;
+    auto add = [&](int signedTag, int uses) {
+      const EntityMesh* em = mesh_.find({1, std::abs(signedTag)});
+      const ElementBlock* lines = em ? em->findBlock(ElementType::Line2) : nullptr;
+      if (!lines) return;
+      for (std::size_t e = 0; e < lines->size(); ++e)
+        expected.emplace_back(edgeKey(lines->element(e)[0], lines->element(e)[1]), uses);
+    };
+    for (const std::vector<int>& loop : surface.loops)
+      for (int c : loop) add(c, 1);
+    for (int c : surface.embeddedCurves) add(c, 2);
+    std::sort(expected.begin(), expected.end());
+    // A segment listed twice (a curve used twice) must border as many triangles.
+    std::vector<std::pair<std::uint64_t, int>> merged;
+    for (const auto& [key, uses] : expected) {
+      if (!merged.empty() && merged.back().first == key)
+        merged.back().second = std::min(2, merged.back().second + uses);
+      else
+        merged.emplace_back(key, uses);
+    }
+    return merged;
+  }
+
+  void checkConformity(EntityId id, const ModelSurface& surface, const ElementBlock& triangles) {
+    std::vector<std::uint64_t> edges;
+    edges.reserve(3 * triangles.size());
+    for (std::size_t e = 0; e < triangles.size(); ++e) {
+      const auto n = triangles.element(e);
+      for (int i = 0; i < 3; ++i) edges.push_back(edgeKey(n[i], n[(i + 1) % 3]));
+    }
+    std::sort(edges.begin(), edges.end());
+    const auto expected = expectedBoundary(surface);
+    std::size_t reported = 0, next = 0;
+    auto report = [&](std::uint64_t key, const std::string& what) {
+      if (reported++ < kMaxProblemsPerCheck)
+        problem(id, edgeName(static_cast<NodeIndex>(key >> 32),
+                             static_cast<NodeIndex>(key & 0xffffffffu)) + " " + what);
+    };
+    for (std::size_t k = 0; k < edges.size();) {
+      std::size_t run = k;
+      while (run < edges.size() && edges[run] == edges[k]) ++run;
+      const int count = static_cast<int>(run - k);
+      while (next < expected.size() && expected[next].first < edges[k])
+        report(expected[next++].first, "of the boundary is not a triangle edge");
+      int wanted = 2;
+      if (next < expected.size() && expected[next].first == edges[k]) wanted = expected[next++].second;
+      if (count != wanted)
+        report(edges[k], "borders " + std::to_string(count) + " triangles instead of " +
+                             std::to_string(wanted));
+      k = run;
+    }
+    while (next < expected.size()) report(expected[next++].first, "of the boundary is not a triangle edge");
+  }
+
+  // Orientation against du x dv, non-flatness, and use of foreign nodes.
+  void checkTriangles(EntityId id, const ModelSurface& surface, const EntityMesh& em,
+                      const ElementBlock& triangles) {
+    std::vector<std::uint8_t> allowed(mesh_.nodeCount(), 0);
+    for (NodeIndex n : em.nodes) allowed[n] = 1;
+    auto allowEntity = [&](EntityId e) {
+      if (const EntityMesh* m = mesh_.find(e))
+        for (NodeIndex n : m->nodes) allowed[n] = 1;
+    };
+    for (const std::vector<int>& loop : surface.loops)
+      for (int c : loop) {
+        allowEntity({1, std::abs(c)});
+        if (const ModelCurve* curve = model_.curve(std::abs(c)))
+          allowEntity({0, curve->startPoint}), allowEntity({0, curve->endPoint});
+      }
+    for (int c : surface.embeddedCurves) {
+      allowEntity({1, c});
+      if (const ModelCurve* curve = model_.curve(c))
+        allowEntity({0, curve->startPoint}), allowEntity({0, curve->endPoint});
+    }
+    for (int p : surface.embeddedPoints) allowEntity({0, p});
+    std::size_t reported = 0;
+    const SurfaceGeometry* g = surface.geometry.get();
+    for (std::size_t e = 0; e < triangles.size(); ++e) {
+      const auto n = triangles.element(e);
+      if (!allowed[n[0]] || !allowed[n[1]] || !allowed[n[2]]) {
+        if (reported++ < kMaxProblemsPerCheck)
+          problem(id, "triangle " + std::to_string(e + 1) + " uses a node of another entity");
+        continue;
+      }
+      const Vec3 a = mesh_.node(n[0]), b = mesh_.node(n[1]), c = mesh_.node(n[2]);
+      const Vec3 normal = cross(b - a, c - a);
+      Vec3 reference = normal;
+      if (g) {
+        const SurfaceDerivatives d = g->firstDerivatives(g->project((a + b + c) / 3));
+        reference = cross(d.du, d.dv);
+      }
+      const double scale = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
+      if (!(dot(normal, reference) > 0) || !(norm(normal) > 1e-14 * scale)) {
+        if (reported++ < kMaxProblemsPerCheck)
+          problem(id, "triangle " + std::to_string(e + 1) + " is inverted or flat");
+      }
+    }
+  }
+
+  void checkSurfaceNodes(EntityId id, const ModelSurface& surface, const EntityMesh& em) {
+    if (!surface.geometry) return;
+    const SurfaceGeometry& g = *surface.geometry;
+    const bool haveParameters = em.parametric.size() == 2 * em.nodes.size();
+    std::size_t reported = 0;
+    for (std::size_t k = 0; k < em.nodes.size(); ++k) {
+      const Vec3 x = mesh_.node(em.nodes[k]);
+      const Vec2 uv = haveParameters ? Vec2{em.parametric[2 * k], em.parametric[2 * k + 1]}
+                                     : g.project(x);
+      const double d = distance(g.point(uv), x);
+      if (!(d <= tolerance_) && reported++ < kMaxProblemsPerCheck)
+        problem(id, nodeName(em.nodes[k]) + " lies off the surface (distance " +
+                        std::to_string(d) + ")");
+    }
+  }
+
+  void checkSurface(const ModelSurface& surface) {
+    const EntityId id{2, surface.tag};
+    const EntityMesh* em = mesh_.find(id);
+    if (!em) return;
+    const ElementBlock* triangles = em->findBlock(ElementType::Triangle3);
+    if (!triangles || triangles->size() == 0) return problem(id, "has no triangles");
+    for (NodeIndex n : triangles->nodes)
+      if (n >= mesh_.nodeCount()) return;  // reported already
+    checkTriangles(id, surface, *em, *triangles);
+    checkConformity(id, surface, *triangles);
+    checkSurfaceNodes(id, surface, *em);
+  }
+
+  void checkVolumes() {
+    for (const auto& [id, em] : mesh_.entities()) {
+      const ElementBlock* tets = em.findBlock(ElementType::Tet4);
+      if (!tets) continue;
+      std::size_t reported = 0;
+      for (std::size_t e = 0; e < tets->size(); ++e) {
+        const auto n = tets->element(e);
+        if (n[0] >= mesh_.nodeCount() || n[1] >= mesh_.nodeCount() ||
+            n[2] >= mesh_.nodeCount() || n[3] >= mesh_.nodeCount())
+          continue;
+        const Vec3 a = mesh_.node(n[0]), b = mesh_.node(n[1]), c = mesh_.node(n[2]),
+                   d = mesh_.node(n[3]);
+        if (!(dot(cross(b - a, c - a), d - a) > 0) && reported++ < kMaxProblemsPerCheck)
+          problem(id, "tetrahedron " + std::to_string(e + 1) + " has a non-positive Jacobian");
+      }
+    }
+  }
+
+  const Model& model_;
+  const Mesh& mesh_;
+  double tolerance_ = 0;
+  MeshCheckReport report_;
+};
+
+}  // namespace
+
+std::string MeshCheckReport::summary() const {
+  static constexpr const char* kNames[4] = {"point", "curve", "surface", "volume"};
+  std::string text;
+  for (const MeshProblem& p : problems) {
+    if (p.entity.dim >= 0 && p.entity.dim < 4)
+      text += std::string(kNames[p.entity.dim]) + " " + std::to_string(p.entity.tag) + ": ";
+    else
+      text += "mesh: ";
+    text += p.message + "\n";
+  }
+  return text;
+}
+
+MeshCheckReport checkMesh(const Model& model, const Mesh& mesh) {
+  return Checker(model, mesh).run();
+}
+
+}  // namespace geomesh

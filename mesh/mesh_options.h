@@ -1,0 +1,20 @@
+#pragma once
+
+namespace geomesh {
+
+// The Mesh.* options the generators read, gathered by the session from the option registry.
+struct MeshOptions {
+  double sizeMin = 0;        // Mesh.MeshSizeMin
+  double sizeMax = 1e22;     // Mesh.MeshSizeMax
+  double sizeFactor = 1;     // Mesh.MeshSizeFactor
+  bool sizeFromPoints = true;          // Mesh.MeshSizeFromPoints
+  bool sizeExtendFromBoundary = true;  // Mesh.MeshSizeExtendFromBoundary
+  int algorithm2D = 6;       // Mesh.Algorithm
+  int algorithm3D = 1;       // Mesh.Algorithm3D
+  int smoothing = 1;         // Mesh.Smoothing
+  int elementOrder = 1;      // Mesh.ElementOrder
+  int numThreads = 1;        // General.NumThreads
+  double randomFactor = 1e-9;  // Mesh.RandomFactor
+};
+
+}  // namespace geomesh

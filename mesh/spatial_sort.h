@@ -1,0 +1,16 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "kernel/vec3.h"
+
+namespace geomesh {
+
+// A biased randomized insertion order (BRIO) of the points, each round sorted along a Hilbert
+// curve: consecutive points are close, so walking point location stays short, while the
+// rounds keep incremental Delaunay insertion expected O(n log n). Deterministic.
+std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points);
+
+}  // namespace geomesh

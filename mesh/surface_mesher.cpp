@@ -1,0 +1,178 @@
+#include "mesh/surface_mesher.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+#include "mesh/constrained_delaunay.h"
+#include "mesh/curve_mesher.h"
+#include "mesh/frontal_refinement.h"
+#include "mesh/generate.h"
+#include "mesh/smoothing.h"
+
+namespace geomesh {
+namespace {
+
+// An affine map from the parameter plane to a "work" plane whose lengths are those on the
+// surface at a reference point (everywhere for a plane). It keeps orientation, so triangles
+// counter-clockwise in the work plane are counter-clockwise in the parametrization.
+class WorkFrame {
+ public:
+  WorkFrame(const SurfaceGeometry& g, Vec2 origin) : origin_(origin) {
+    const SurfaceDerivatives d = g.firstDerivatives(origin);
+    const double a11 = norm(d.du);
+    if (!(a11 > 0)) return;
+    const double a12 = dot(d.dv, d.du) / a11;
+    const double a22 = norm(d.dv - (a12 / a11) * d.du);
+    if (!(a22 > 0)) return;
+    a11_ = a11, a12_ = a12, a22_ = a22;
+  }
+  Vec2 toWork(Vec2 uv) const {
+    const double du = uv.u - origin_.u, dv = uv.v - origin_.v;
+    return {a11_ * du + a12_ * dv, a22_ * dv};
+  }
+  Vec2 toParam(Vec2 w) const {
+    const double dv = w.v / a22_;
+    const double du = (w.u - a12_ * dv) / a11_;
+    return {origin_.u + du, origin_.v + dv};
+  }
+
+ private:
+  Vec2 origin_;
+  double a11_ = 1, a12_ = 0, a22_ = 1;
+};
+
+// The nodes and constrained segments a surface's triangulation starts from, numbered locally.
+struct SurfaceInput {
+  std::vector<NodeIndex> nodes;
+  std::vector<ConstrainedSegment> segments;
+  std::unordered_map<NodeIndex, std::uint32_t> localOf;
+
+  std::uint32_t local(NodeIndex n) {
+    const auto [it, inserted] = localOf.try_emplace(n, static_cast<std::uint32_t>(nodes.size()));
+    if (inserted) nodes.push_back(n);
+    return it->second;
+  }
+  void addChain(const std::vector<NodeIndex>& chain, EdgeKind kind) {
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+      segments.push_back({local(chain[k]), local(chain[k + 1]), kind});
+  }
+};
+
+SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
+  SurfaceInput in;
+  for (const std::vector<int>& loop : surface.loops)
+    for (int curve : loop) in.addChain(curveNodeChain(model, mesh, curve), EdgeKind::Boundary);
+  for (int curve : surface.embeddedCurves)
+    in.addChain(curveNodeChain(model, mesh, curve), EdgeKind::Embedded);
+  for (int point : surface.embeddedPoints) in.local(pointNode(mesh, point));
+  return in;
+}
+
+std::vector<Vec2> parameters(const SurfaceGeometry& g, const Mesh& mesh,
+                             const std::vector<NodeIndex>& nodes) {
+  std::vector<Vec2> uv;
+  uv.reserve(nodes.size());
+  for (NodeIndex n : nodes) uv.push_back(g.project(mesh.node(n)));
+  return uv;
+}
+
+Vec2 boxCenter(const std::vector<Vec2>& points) {
+  Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (Vec2 p : points) {
+    lo = {std::min(lo.u, p.u), std::min(lo.v, p.v)};
+    hi = {std::max(hi.u, p.u), std::max(hi.v, p.v)};
+  }
+  return {0.5 * (lo.u + hi.u), 0.5 * (lo.v + hi.v)};
+}
+
+// The constrained Delaunay triangulation of the input, boundary edges recovered.
+Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Vec2>& work,
+                                    EntityId id, const Mesh& mesh) {
+  Triangulation2D tri = delaunayTriangulation(work);
+  constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
+  for (std::uint32_t k = 0; k < in.nodes.size(); ++k)
+    if (tri.triangleOf(k + first) == kNone)
+      throw MeshError(id, "boundary node " + std::to_string(in.nodes[k] + 1) +
+                              " coincides with another one in the parameter plane");
+  std::vector<ConstrainedSegment> segments = in.segments;
+  for (ConstrainedSegment& s : segments) s.a += first, s.b += first;
+  const long failed = recoverSegments(tri, segments);
+  if (failed >= 0) {
+    const ConstrainedSegment& s = in.segments[static_cast<std::size_t>(failed)];
+    const Vec3 a = mesh.node(in.nodes[s.a]), b = mesh.node(in.nodes[s.b]);
+    throw MeshError(id, "cannot recover the boundary edge from (" + std::to_string(a.x) + ", " +
+                            std::to_string(a.y) + ", " + std::to_string(a.z) + ") to (" +
+                            std::to_string(b.x) + ", " + std::to_string(b.y) + ", " +
+                            std::to_string(b.z) +
+                            "): boundary curves intersect or pass through a node");
+  }
+  return tri;
+}
+
+// Copies the inside triangles and their new vertices into the surface's EntityMesh.
+void storeMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
+               const SurfaceInput& in, const std::vector<double>& sizes, const WorkFrame& frame,
+               const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh,
+               std::vector<double>& nodeSizes) {
+  constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
+  const std::uint32_t boundaryEnd = first + static_cast<std::uint32_t>(in.nodes.size());
+  std::vector<NodeIndex> globalOf(tri.pointCount(), kNone);
+  for (std::uint32_t k = 0; k < in.nodes.size(); ++k) globalOf[k + first] = in.nodes[k];
+  std::vector<std::uint8_t> used(tri.pointCount(), 0);
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
+    if (inside[t])
+      for (int i = 0; i < 3; ++i) used[tri.vertex(3 * t + i)] = 1;
+  for (std::uint32_t v = boundaryEnd; v < tri.pointCount(); ++v) {
+    if (!used[v]) continue;
+    const Vec2 uv = frame.toParam(tri.point(v));
+    const NodeIndex node = mesh.addNode(g.point(uv));
+    globalOf[v] = node;
+    em.nodes.push_back(node);
+    em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
+    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
+    nodeSizes[node] = sizes[v];
+  }
+  ElementBlock& triangles = em.block(ElementType::Triangle3);
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
+    if (inside[t])
+      for (int i = 0; i < 3; ++i) triangles.nodes.push_back(globalOf[tri.vertex(3 * t + i)]);
+}
+
+}  // namespace
+
+void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
+                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes) {
+  const EntityId id{2, surface.tag};
+  if (!surface.geometry) throw MeshError(id, "surface has no geometry");
+  if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
+  const SurfaceGeometry& g = *surface.geometry;
+  const SurfaceInput in = collectInput(model, surface, mesh);
+  const std::vector<Vec2> uv = parameters(g, mesh, in.nodes);
+  const WorkFrame frame(g, boxCenter(uv));
+  std::vector<Vec2> work;
+  work.reserve(uv.size());
+  for (Vec2 p : uv) work.push_back(frame.toWork(p));
+
+  Triangulation2D tri = triangulateBoundary(in, work, id, mesh);
+  std::vector<std::uint8_t> inside = classifyInside(tri);
+  if (std::find(inside.begin(), inside.end(), 1) == inside.end())
+    throw MeshError(id, "the boundary encloses no area");
+
+  const double fallback = rules.finish(rules.defaultSize);
+  std::vector<double> sizes(Triangulation2D::kFirstVertex, 0.0);
+  for (NodeIndex n : in.nodes)
+    sizes.push_back(n < nodeSizes.size() && nodeSizes[n] > 0 ? nodeSizes[n] : fallback);
+  refineFrontal(tri, inside, sizes);
+  smoothTriangulation(tri, inside,
+                      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size()),
+                      smoothingPasses);
+
+  EntityMesh& em = mesh.entity(id);
+  em.nodes.clear();
+  em.parametric.clear();
+  em.blocks.clear();
+  storeMesh(tri, inside, in, sizes, frame, g, em, mesh, nodeSizes);
+}
+
+}  // namespace geomesh

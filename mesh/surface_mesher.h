@@ -1,0 +1,20 @@
+#pragma once
+
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/mesh.h"
+#include "mesh/size_rules.h"
+
+namespace geomesh {
+
+// Meshes one surface whose boundary (and embedded) curves and points are meshed already:
+// constrained Delaunay triangulation of the boundary nodes in the parameter plane, frontal-
+// Delaunay refinement to the target size (extended from the boundary nodes' sizes in
+// nodeSizes), then `smoothingPasses` passes of smoothing. No boundary node is added; the
+// triangles are counter-clockwise in the surface's parametrization. Throws MeshError naming
+// the surface when its boundary cannot be triangulated.
+void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
+                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes);
+
+}  // namespace geomesh

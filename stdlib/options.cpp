@@ -1,0 +1,96 @@
+#include "stdlib/options.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "stdlib/edit_distance.h"
+
+namespace geomesh {
+
+namespace {
+
+OptionRegistry::Option fromSpec(const OptionSpec& spec) {
+  OptionRegistry::Option option;
+  option.name = spec.name;
+  option.type = spec.type;
+  option.number = option.defaultNumber = spec.number;
+  option.text = option.defaultText = spec.text;
+  option.help = spec.help;
+  if (!spec.alias.empty()) option.aliases.emplace_back(spec.alias);
+  return option;
+}
+
+}  // namespace
+
+OptionRegistry::OptionRegistry() {
+  for (auto table : {generalOptions(), geometryOptions(), meshOptions()})
+    for (const auto& spec : table) options_.push_back(fromSpec(spec));
+  std::sort(options_.begin(), options_.end(),
+            [](const Option& a, const Option& b) { return a.name < b.name; });
+  for (std::size_t i = 0; i < options_.size(); ++i) {
+    index_.emplace(options_[i].name, i);
+    names_.push_back(options_[i].name);
+    for (const auto& alias : options_[i].aliases) {
+      index_.emplace(alias, i);
+      names_.push_back(alias);
+    }
+  }
+}
+
+const OptionRegistry::Option* OptionRegistry::find(std::string_view name) const {
+  auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &options_[it->second];
+}
+
+OptionRegistry::Option* OptionRegistry::findMutable(std::string_view name) {
+  auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &options_[it->second];
+}
+
+const OptionRegistry::Option& OptionRegistry::require(std::string_view name,
+                                                      bool wantNumber) const {
+  const Option* option = find(name);
+  if (!option || (option->type == OptionType::String) == wantNumber)
+    throw std::out_of_range("unknown " + std::string(wantNumber ? "number" : "string") +
+                            " option '" + std::string(name) + "'");
+  return *option;
+}
+
+bool OptionRegistry::hasNumber(std::string_view name) const {
+  const Option* option = find(name);
+  return option && option->type != OptionType::String;
+}
+
+double OptionRegistry::number(std::string_view name) const { return require(name, true).number; }
+
+void OptionRegistry::setNumber(std::string_view name, double value) {
+  require(name, true);
+  findMutable(name)->number = value;
+}
+
+bool OptionRegistry::hasString(std::string_view name) const {
+  const Option* option = find(name);
+  return option && option->type == OptionType::String;
+}
+
+std::string OptionRegistry::string(std::string_view name) const {
+  return require(name, false).text;
+}
+
+void OptionRegistry::setString(std::string_view name, std::string value) {
+  require(name, false);
+  findMutable(name)->text = std::move(value);
+}
+
+std::vector<std::string> OptionRegistry::suggestions(std::string_view name) const {
+  return closestNames(name, names_);
+}
+
+void OptionRegistry::reset() {
+  for (auto& option : options_) {
+    option.number = option.defaultNumber;
+    option.text = option.defaultText;
+  }
+}
+
+}  // namespace geomesh

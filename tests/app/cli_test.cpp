@@ -1,0 +1,141 @@
+// The geomesh command as a user runs it: exit statuses, where output goes, which files appear.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include "app/run.h"
+
+namespace fs = std::filesystem;
+
+namespace geomesh {
+namespace {
+
+// A scratch directory per test, removed afterwards.
+class Cli : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("geomesh-cli-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+  int run(std::vector<std::string> args) {
+    out_.str("");
+    err_.str("");
+    return runGeomesh(args, out_, err_);
+  }
+
+  fs::path dir_;
+  std::ostringstream out_, err_;
+};
+
+const char* kSquare = R"(Point(1) = {0, 0, 0, 0.25};
+Point(2) = {1, 0, 0, 0.25};
+Point(3) = {1, 1, 0, 0.25};
+Point(4) = {0, 1, 0, 0.25};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Printf("square ready");
+)";
+
+TEST_F(Cli, DefaultOutputIsTheScriptNameWithMsh) {
+  fs::path geo = write("plate.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2"}), 0) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "plate.msh"));
+  std::ifstream in(dir_ / "plate.msh");
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "$MeshFormat");
+}
+
+TEST_F(Cli, PrintfGoesToStdoutAndLogToStderr) {
+  fs::path geo = write("p.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2", "-o", (dir_ / "o.msh").string()}), 0) << err_.str();
+  EXPECT_EQ(out_.str(), "square ready\n");
+  EXPECT_NE(err_.str().find("Info"), std::string::npos);
+}
+
+TEST_F(Cli, VerbosityZeroIsSilent) {
+  fs::path geo = write("p.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2", "-v", "0", "-o", (dir_ / "o.msh").string()}), 0);
+  EXPECT_EQ(err_.str(), "");
+}
+
+TEST_F(Cli, SyntaxErrorPointsAtLineAndColumnAndWritesNothing) {
+  fs::path geo = write("bad.geo", "a = 1;\nb = (a + ;\n");
+  EXPECT_EQ(run({geo.string(), "-2"}), 1);
+  const std::string err = err_.str();
+  EXPECT_NE(err.find("bad.geo:2:10: error:"), std::string::npos) << err;
+  EXPECT_NE(err.find("b = (a + ;"), std::string::npos) << err;
+  EXPECT_NE(err.find("         ^"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad.msh"));
+}
+
+TEST_F(Cli, UnknownFlagIsAnError) {
+  EXPECT_EQ(run({"x.geo", "-notaflag"}), 1);
+  EXPECT_NE(err_.str().find("-notaflag"), std::string::npos);
+}
+
+TEST_F(Cli, MissingFileIsAnError) {
+  EXPECT_EQ(run({(dir_ / "absent.geo").string(), "-2"}), 1);
+  EXPECT_NE(err_.str().find("absent.geo"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "absent.msh"));
+}
+
+TEST_F(Cli, NoFileIsAnError) { EXPECT_EQ(run({"-2"}), 1); }
+
+TEST_F(Cli, VersionAndHelp) {
+  EXPECT_EQ(run({"-version"}), 0);
+  EXPECT_EQ(out_.str(), "0.1.0\n");
+  EXPECT_EQ(run({"-help"}), 0);
+  EXPECT_NE(out_.str().find("Usage: geomesh"), std::string::npos);
+}
+
+TEST_F(Cli, SetNumberOverridesDefineConstant) {
+  fs::path geo = write("p.geo", "DefineConstant[ n = 3 ];\nPrintf(\"n=%g\", n);\n");
+  ASSERT_EQ(run({geo.string(), "-0", "-setnumber", "n", "7"}), 0) << err_.str();
+  EXPECT_EQ(out_.str(), "n=7\n");
+}
+
+TEST_F(Cli, MeshFailureWritesNoFile) {
+  // A loop whose curves do not close is refused with the line of the loop.
+  fs::path geo = write("open.geo", R"(Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {0, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3};
+Curve Loop(1) = {1, 2};
+Plane Surface(1) = {1};
+)");
+  EXPECT_EQ(run({geo.string(), "-2"}), 1);
+  EXPECT_NE(err_.str().find("open.geo:3:"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "open.msh"));
+}
+
+// The real executable: exit statuses as the shell sees them.
+TEST_F(Cli, ExecutableExitStatus) {
+  fs::path good = write("good.geo", kSquare);
+  fs::path bad = write("bad.geo", "Point(1) = {0, 0, 0\n");
+  const std::string exe = GEOMESH_BINARY;
+  const std::string quiet = " -v 0 > /dev/null 2>&1";
+  EXPECT_EQ(std::system((exe + " " + good.string() + " -2" + quiet).c_str()), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "good.msh"));
+  int status = std::system((exe + " " + bad.string() + " -2" + quiet).c_str());
+  EXPECT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_FALSE(fs::exists(dir_ / "bad.msh"));
+}
+
+}  // namespace
+}  // namespace geomesh

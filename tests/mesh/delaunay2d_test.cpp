@@ -1,0 +1,145 @@
+#include "mesh/delaunay2d.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mesh/constrained_delaunay.h"
+#include "mesh/predicates.h"
+
+namespace geomesh {
+namespace {
+
+std::vector<Vec2> randomPoints(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::vector<Vec2> points(n);
+  for (Vec2& p : points) p = {coordinate(rng), coordinate(rng)};
+  return points;
+}
+
+void expectValidTriangulation(const Triangulation2D& tri) {
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t) {
+    const Vec2 a = tri.point(tri.vertex(3 * t)), b = tri.point(tri.vertex(3 * t + 1)),
+               c = tri.point(tri.vertex(3 * t + 2));
+    ASSERT_GT(orient2d(a, b, c), 0) << "triangle " << t;
+    for (std::uint32_t corner = 3 * t; corner < 3 * t + 3; ++corner) {
+      const std::uint32_t across = tri.neighbour(corner);
+      if (across == kNone) continue;
+      ASSERT_EQ(tri.neighbour(across), corner);
+      // The shared edge has the same end points, in opposite order.
+      ASSERT_EQ(tri.vertex(across - across % 3 + (across + 1) % 3),
+                tri.vertex(corner - corner % 3 + (corner + 2) % 3));
+    }
+  }
+}
+
+// No inserted point strictly inside any triangle's circumcircle (brute force).
+void expectEmptyCircumcircles(const Triangulation2D& tri) {
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t) {
+    const Vec2 a = tri.point(tri.vertex(3 * t)), b = tri.point(tri.vertex(3 * t + 1)),
+               c = tri.point(tri.vertex(3 * t + 2));
+    for (std::uint32_t v = Triangulation2D::kFirstVertex; v < tri.pointCount(); ++v)
+      ASSERT_LE(incircle(a, b, c, tri.point(v)), 0) << "triangle " << t << ", point " << v;
+  }
+}
+
+TEST(Delaunay2D, RandomPointsGiveADelaunayTriangulation) {
+  const std::vector<Vec2> points = randomPoints(600, 7);
+  const Triangulation2D tri = delaunayTriangulation(points);
+  // n points inside the enclosing triangle: 2n + 1 triangles.
+  EXPECT_EQ(tri.triangleCount(), 2 * points.size() + 1);
+  expectValidTriangulation(tri);
+  expectEmptyCircumcircles(tri);
+  for (std::uint32_t k = 0; k < points.size(); ++k) {
+    EXPECT_NE(tri.triangleOf(k + Triangulation2D::kFirstVertex), kNone);
+    EXPECT_EQ(tri.point(k + Triangulation2D::kFirstVertex), points[k]);
+  }
+}
+
+TEST(Delaunay2D, CocircularGridPointsStayValid) {
+  std::vector<Vec2> points;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) points.push_back({i * 0.1, j * 0.1});
+  const Triangulation2D tri = delaunayTriangulation(points);
+  EXPECT_EQ(tri.triangleCount(), 2 * points.size() + 1);
+  expectValidTriangulation(tri);
+  expectEmptyCircumcircles(tri);
+}
+
+TEST(Delaunay2D, DuplicatePointsAreLeftOut) {
+  std::vector<Vec2> points = randomPoints(50, 3);
+  points.push_back(points[10]);
+  points.push_back(points[20]);
+  const Triangulation2D tri = delaunayTriangulation(points);
+  EXPECT_EQ(tri.triangleCount(), 2 * 50 + 1u);
+  // Of each pair of equal points, exactly one is in the triangulation.
+  constexpr std::uint32_t f = Triangulation2D::kFirstVertex;
+  EXPECT_NE(tri.triangleOf(f + 10) == kNone, tri.triangleOf(f + 50) == kNone);
+  EXPECT_NE(tri.triangleOf(f + 20) == kNone, tri.triangleOf(f + 51) == kNone);
+  expectValidTriangulation(tri);
+}
+
+TEST(Delaunay2D, LargeRandomSetIsLocallyDelaunayEverywhere) {
+  const std::vector<Vec2> points = randomPoints(100000, 11);
+  Triangulation2D tri = delaunayTriangulation(points);
+  EXPECT_EQ(tri.triangleCount(), 2 * points.size() + 1);
+  expectValidTriangulation(tri);
+  for (std::uint32_t c = 0; c < 3 * tri.triangleCount(); ++c) ASSERT_FALSE(tri.shouldFlip(c));
+}
+
+TEST(ConstrainedDelaunay, RecoversSegmentsCrossingManyTriangles) {
+  // A square (boundary) with random points inside and a zigzag of embedded segments.
+  std::vector<Vec2> points{{-1.5, -1.5}, {1.5, -1.5}, {1.5, 1.5}, {-1.5, 1.5},
+                           {-1.2, 0.0},  {1.2, 0.05}, {0.0, 1.2}, {0.05, -1.2}};
+  const std::vector<Vec2> inner = randomPoints(400, 5);
+  points.insert(points.end(), inner.begin(), inner.end());
+  Triangulation2D tri = delaunayTriangulation(points);
+  constexpr std::uint32_t f = Triangulation2D::kFirstVertex;
+  const std::vector<ConstrainedSegment> segments{
+      {f + 0, f + 1, EdgeKind::Boundary}, {f + 1, f + 2, EdgeKind::Boundary},
+      {f + 2, f + 3, EdgeKind::Boundary}, {f + 3, f + 0, EdgeKind::Boundary},
+      {f + 4, f + 5, EdgeKind::Embedded}, {f + 6, f + 7, EdgeKind::Embedded}};
+  // The two embedded segments cross: the second cannot be recovered.
+  EXPECT_EQ(recoverSegments(tri, segments), 5);
+
+  Triangulation2D tri2 = delaunayTriangulation(points);
+  const std::vector<ConstrainedSegment> valid(segments.begin(), segments.end() - 1);
+  ASSERT_EQ(recoverSegments(tri2, valid), -1);
+  expectValidTriangulation(tri2);
+  for (const ConstrainedSegment& s : valid) {
+    const std::uint32_t c = tri2.findEdge(s.a, s.b);
+    ASSERT_NE(c, kNone);
+    EXPECT_EQ(tri2.kind(c), s.kind);
+  }
+  // Free edges are constrained Delaunay again.
+  for (std::uint32_t c = 0; c < 3 * tri2.triangleCount(); ++c) ASSERT_FALSE(tri2.shouldFlip(c));
+  // Inside: the square's triangles, on both sides of the embedded segment.
+  const std::vector<std::uint8_t> inside = classifyInside(tri2);
+  double area = 0;
+  for (std::uint32_t t = 0; t < tri2.triangleCount(); ++t) {
+    if (!inside[t]) continue;
+    const Vec2 a = tri2.point(tri2.vertex(3 * t)), b = tri2.point(tri2.vertex(3 * t + 1)),
+               c = tri2.point(tri2.vertex(3 * t + 2));
+    area += 0.5 * ((b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u));
+    EXPECT_FALSE(tri2.hasEnclosingVertex(t));
+  }
+  EXPECT_NEAR(area, 9.0, 1e-12);
+}
+
+TEST(Predicates, ExactNearDegenerateDecisions) {
+  // Points nearly collinear: plain double evaluation gets these wrong or zero.
+  const Vec2 a{0.5, 0.5}, b{12, 12}, c{24, 24};
+  EXPECT_EQ(orient2d(a, b, c), 0);
+  EXPECT_EQ(orient2d(a, b, {24, 24 + 1e-14}), 1);
+  EXPECT_EQ(orient2d(a, b, {24, 24 - 1e-14}), -1);
+  EXPECT_EQ(incircle({0, 0}, {1, 0}, {0, 1}, {1, 1}), 0);
+  EXPECT_EQ(incircle({0, 0}, {1, 0}, {0, 1}, {1, 1 - 1e-15}), 1);
+  EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}), 1);
+  EXPECT_EQ(insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.2}), 1);
+  EXPECT_EQ(insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}), 0);
+  EXPECT_EQ(insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 2, 2}), -1);
+}
+
+}  // namespace
+}  // namespace geomesh

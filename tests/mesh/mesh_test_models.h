@@ -1,0 +1,112 @@
+#pragma once
+
+// Small models for the mesher tests, built directly (no script, no geometry kernel): straight
+// segments and the plane z = 0.
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/mesh.h"
+
+namespace geomesh::testing {
+
+class SegmentGeometry final : public CurveGeometry {
+ public:
+  SegmentGeometry(Vec3 a, Vec3 b) : a_(a), b_(b) {}
+  Interval range() const override { return {0, 1}; }
+  Vec3 point(double t) const override { return a_ + t * (b_ - a_); }
+  Vec3 firstDerivative(double) const override { return b_ - a_; }
+  Vec3 secondDerivative(double) const override { return {}; }
+
+ private:
+  Vec3 a_, b_;
+};
+
+// A full circle of the given radius around `center` in the plane z = center.z, from angle 0.
+class CircleGeometry final : public CurveGeometry {
+ public:
+  CircleGeometry(Vec3 center, double radius) : c_(center), r_(radius) {}
+  Interval range() const override { return {0, 2 * kPi}; }
+  Vec3 point(double t) const override { return c_ + Vec3{r_ * std::cos(t), r_ * std::sin(t), 0}; }
+  Vec3 firstDerivative(double t) const override { return {-r_ * std::sin(t), r_ * std::cos(t), 0}; }
+  Vec3 secondDerivative(double t) const override {
+    return {-r_ * std::cos(t), -r_ * std::sin(t), 0};
+  }
+  static constexpr double kPi = 3.14159265358979323846;
+
+ private:
+  Vec3 c_;
+  double r_;
+};
+
+// The plane z = 0, parametrized by (u, v) -> (u, sign * v, 0): its normal is sign * z.
+class FlatGeometry final : public SurfaceGeometry {
+ public:
+  explicit FlatGeometry(double sign = 1) : sign_(sign) {}
+  ParamBox bounds() const override { return {{-1e3, 1e3}, {-1e3, 1e3}}; }
+  Vec3 point(Vec2 uv) const override { return {uv.u, sign_ * uv.v, 0}; }
+  SurfaceDerivatives firstDerivatives(Vec2) const override { return {{1, 0, 0}, {0, sign_, 0}}; }
+  Vec2 project(Vec3 p) const override { return {p.x, sign_ * p.y}; }
+  bool isPlane() const override { return true; }
+
+ private:
+  double sign_;
+};
+
+// Builds polygonal plane surfaces in z = 0 point by point.
+class PolygonModelBuilder {
+ public:
+  Model model;
+
+  int point(double x, double y, double size = 0) {
+    const int tag = ++points_;
+    model.addPoint({tag, {x, y, 0}, size});
+    return tag;
+  }
+  int line(int a, int b) {
+    const int tag = ++curves_;
+    model.addCurve({tag, a, b,
+                    std::make_shared<SegmentGeometry>(model.point(a)->xyz, model.point(b)->xyz)});
+    return tag;
+  }
+  // A closed polygon through the given corners (x, y pairs), all with mesh size `size`.
+  std::vector<int> polygon(const std::vector<Vec2>& corners, double size) {
+    std::vector<int> pts, loop;
+    for (Vec2 c : corners) pts.push_back(point(c.u, c.v, size));
+    for (std::size_t k = 0; k < pts.size(); ++k) loop.push_back(line(pts[k], pts[(k + 1) % pts.size()]));
+    return loop;
+  }
+  std::vector<int> circle(Vec2 center, double radius, double size) {
+    const int p = point(center.u + radius, center.v, size);
+    const int tag = ++curves_;
+    model.addCurve({tag, p, p, std::make_shared<CircleGeometry>(Vec3{center.u, center.v, 0}, radius)});
+    return {tag};
+  }
+  // Loops: the outer one first. The plane's normal is +z, or -z when `flipped`.
+  ModelSurface& surface(std::vector<std::vector<int>> loops, bool flipped = false) {
+    ModelSurface s;
+    s.tag = ++surfaces_;
+    s.loops = std::move(loops);
+    s.geometry = std::make_shared<FlatGeometry>(flipped ? -1.0 : 1.0);
+    return model.addSurface(std::move(s));
+  }
+
+ private:
+  int points_ = 0, curves_ = 0, surfaces_ = 0;
+};
+
+// Sum of the triangle areas of a surface's mesh.
+inline double meshArea(const Mesh& mesh, int surfaceTag) {
+  const ElementBlock* block = mesh.find({2, surfaceTag})->findBlock(ElementType::Triangle3);
+  double area = 0;
+  for (std::size_t e = 0; e < block->size(); ++e) {
+    const auto n = block->element(e);
+    const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
+    area += 0.5 * norm(cross(b - a, c - a));
+  }
+  return area;
+}
+
+}  // namespace geomesh::testing
