@@ -91,7 +91,7 @@ std::string formatSummary(const MeshSummary& s) {
   if (s.area > 0) os << "; area " << s.area;
   if (s.length > 0) os << "; length " << s.length;
   if (s.meanQuality > 0) {
-    os.precision(3);
+    os.precision(4);
     os << "; quality (gamma) min " << s.minQuality << ", mean " << s.meanQuality;
   }
   return os.str();

@@ -60,6 +60,7 @@ struct Attribute {
 struct Expr {
   ExprKind kind = ExprKind::Number;
   SourceLocation loc;
+  int depth = 1;  // operators nested in this expression (bounded by the parser)
   double number = 0;
   std::string text;
   Name name;

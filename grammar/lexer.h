@@ -29,6 +29,8 @@ class Lexer {
   Parser::symbol_type number(const Parser::location_type& where);
   Parser::symbol_type quoted(const Parser::location_type& where);
   Parser::symbol_type punctuation(int token, const Parser::location_type& where);
+  Parser::symbol_type opening(Parser::symbol_type symbol);
+  Parser::symbol_type closing(Parser::symbol_type symbol);
   void skipBlockComment(const Parser::location_type& where);
   bool nextNonSpaceIs(char c) const;
   void countLines(const char* from, const char* to);
@@ -45,6 +47,7 @@ class Lexer {
   bool afterDot_ = false;
   bool defineAhead_ = false;
   int defineDepth_ = 0;
+  int nesting_ = 0;  // open brackets and blocks (For, If, Macro)
   std::string currentText_, previousText_;
   Parser::location_type currentLocation_, previousLocation_;
 };

@@ -14,15 +14,15 @@ using Token = Parser::token;
 constexpr std::string_view kCommandWords[] = {
     "Abort", "Affine", "AdaptMesh", "Background", "Bezier", "Block", "BooleanDifference",
     "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
-    "BSpline", "Chamfer", "ClassifySurfaces", "CreateGeometry", "Characteristic", "Circle", "Cohomology", "Coherence", "Color",
+    "BSpline", "Chamfer", "ClassifySurfaces", "Closest", "CreateGeometry", "Characteristic", "Circle", "Cohomology", "Coherence", "Color",
     "CombinedBoundary", "Compound", "Cone", "CreateTopology", "Curve", "Cylinder", "Delete",
     "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Error", "Exit", "Extrude", "Field",
     "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide", "Homology", "Include",
     "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm", "MeshSize", "NewModel", "NonBlockingSystem",
-    "OptimizeMesh", "Periodic", "Physical", "Physicals", "Plane", "Point", "PointsOf",
+    "OptimizeMesh", "PartitionMesh", "Periodic", "Physical", "Physicals", "Plane", "Point", "PointsOf",
     "PostProcessing", "Print", "Printf", "QuadTriAddVerts", "QuadTriNoNewVerts", "Recombine",
     "Recursive", "Rectangle", "RefineMesh", "RelocateMesh", "RenumberMeshElements", "RenumberMeshNodes", "Reverse", "Rotate", "Ruled",
-    "Save", "SetChanged", "SetFactory", "SetNumber", "SetOrder", "SetString", "Show", "Sleep",
+    "Save", "SetChanged", "ShapeFromFile", "SetFactory", "SetNumber", "SetOrder", "SetString", "Show", "Sleep",
     "Smoother", "Solver", "Sphere", "Spline", "Surface", "Symmetry", "System", "ThruSections",
     "Torus", "Transfinite", "Translate", "View", "Volume", "Warning", "Wedge", "Wire",
 };
@@ -100,15 +100,15 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
     afterDot_ = false;
     return Parser::make_IDENT(std::move(text), where);
   }
-  if (text == "For") return Parser::make_FOR(where);
-  if (text == "EndFor") return Parser::make_ENDFOR(where);
+  if (text == "For") return opening(Parser::make_FOR(where));
+  if (text == "EndFor") return closing(Parser::make_ENDFOR(where));
   if (text == "In") return Parser::make_IN(where);
-  if (text == "If") return Parser::make_IF(where);
+  if (text == "If") return opening(Parser::make_IF(where));
   if (text == "ElseIf") return Parser::make_ELSEIF(where);
   if (text == "Else") return Parser::make_ELSE(where);
-  if (text == "EndIf") return Parser::make_ENDIF(where);
-  if (text == "Macro" || text == "Function") return Parser::make_MACRO(where);
-  if (text == "Return") return Parser::make_RETURN(where);
+  if (text == "EndIf") return closing(Parser::make_ENDIF(where));
+  if (text == "Macro" || text == "Function") return opening(Parser::make_MACRO(where));
+  if (text == "Return") return closing(Parser::make_RETURN(where));
   if (text == "Call") return Parser::make_CALL(where);
   if (text == "Plugin") return Parser::make_PLUGIN(where);
   if (text == "DefineConstant" || text == "DefineNumber" || text == "DefineString") {
@@ -147,6 +147,21 @@ Parser::symbol_type Lexer::quoted(const Parser::location_type& where) {
   return Parser::make_STRING(std::move(value), where);
 }
 
+// Parsing, evaluating and destroying the syntax tree recurse once per level of nesting: a
+// bound keeps hostile inputs from exhausting the stack.
+constexpr int kMaxNesting = 256;
+
+Parser::symbol_type Lexer::opening(Parser::symbol_type symbol) {
+  if (++nesting_ > kMaxNesting)
+    fail(symbol.location, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
+  return symbol;
+}
+
+Parser::symbol_type Lexer::closing(Parser::symbol_type symbol) {
+  if (nesting_ > 0) --nesting_;
+  return symbol;
+}
+
 Parser::symbol_type Lexer::punctuation(int token, const Parser::location_type& where) {
   afterDot_ = token == '.';
   if (token == '[') {
@@ -155,6 +170,8 @@ Parser::symbol_type Lexer::punctuation(int token, const Parser::location_type& w
     --defineDepth_;
   }
   defineAhead_ = false;
+  if (token == '(' || token == '[' || token == '{') return opening(Parser::symbol_type(token, where));
+  if (token == ')' || token == ']' || token == '}') return closing(Parser::symbol_type(token, where));
   return Parser::symbol_type(token, where);
 }
 

@@ -20,10 +20,26 @@ ExprPtr makeExpr(ExprKind kind, const Parser::location_type& where) {
   return expr;
 }
 
+namespace {
+
+// Evaluating and destroying an expression recurse once per nested operator: a bound keeps
+// absurd inputs (a sum of a million terms) from exhausting the stack.
+constexpr int kMaxExpressionDepth = 2000;
+
+void setDepth(Expr& expr, const Parser::location_type& where) {
+  for (const auto& arg : expr.args) expr.depth = std::max(expr.depth, arg->depth + 1);
+  if (expr.depth > kMaxExpressionDepth)
+    throw SyntaxError(at(where), "expression too deeply nested (more than " +
+                                     std::to_string(kMaxExpressionDepth) + " operators)");
+}
+
+}  // namespace
+
 ExprPtr unary(std::string op, ExprPtr operand, const Parser::location_type& where) {
   auto expr = makeExpr(ExprKind::Unary, where);
   expr->text = std::move(op);
   expr->args.push_back(std::move(operand));
+  setDepth(*expr, where);
   return expr;
 }
 
@@ -32,6 +48,7 @@ ExprPtr binary(std::string op, ExprPtr left, ExprPtr right, const Parser::locati
   expr->text = std::move(op);
   expr->args.push_back(std::move(left));
   expr->args.push_back(std::move(right));
+  setDepth(*expr, where);
   return expr;
 }
 
@@ -55,11 +72,15 @@ StmtPtr forStmt(Name variable, ExprPtr range, StmtList body, const Parser::locat
 
 namespace {
 
+// Token names for messages: keywords and operators in quotes, categories as words.
 std::string describe(Parser::symbol_kind_type kind) {
   std::string_view name = Parser::symbol_name(kind);
-  if (name.size() < 2 || name.front() != '"' || name.back() != '"') return std::string(name);
+  for (std::string_view category :
+       {"number", "string", "identifier", "keyword", "modifier", "attribute", "end of file"})
+    if (name == category) return std::string(name);
+  if (name.starts_with('\'')) return std::string(name);
   std::string quoted(1, '\'');
-  quoted.append(name.substr(1, name.size() - 2));
+  quoted.append(name);
   quoted.push_back('\'');
   return quoted;
 }
@@ -71,26 +92,55 @@ SourceLocation endOf(const Parser::location_type& where) {
 
 }  // namespace
 
+namespace {
+
+// Tokens that could only continue an expression or a name: listing them says nothing useful.
+bool continuesExpression(std::string_view name) {
+  for (std::string_view op : {"'+'", "'-'", "'*'", "'/'", "'%'", "'^'", "'<'", "'>'", "'=='",
+                              "'!='", "'<='", "'>='", "'&&'", "'||'", "'?'", "':'", "'['", "'~'",
+                              "'('", "'.'", "'++'", "'--'", "'+='", "'-='", "'*='", "'/='"})
+    if (name == op) return true;
+  return false;
+}
+
+bool contains(const std::vector<std::string>& names, std::string_view name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
+    text += names[i];
+  }
+  return text;
+}
+
+}  // namespace
+
 void reportSyntaxError(const Lexer& lexer, const Parser::context& context) {
-  constexpr int kMaxExpected = 8;
-  Parser::symbol_kind_type expected[kMaxExpected];
-  int count = context.expected_tokens(expected, kMaxExpected);
-  const bool semicolonExpected = std::any_of(expected, expected + count, [](auto kind) {
-    return std::string_view(Parser::symbol_name(kind)) == "';'";
-  });
+  Parser::symbol_kind_type kinds[Parser::YYNTOKENS];
+  const int count = context.expected_tokens(kinds, Parser::YYNTOKENS);
+  std::vector<std::string> expected;
+  for (int i = 0; i < count; ++i) expected.push_back(describe(kinds[i]));
   const bool atEnd = context.token() == Parser::symbol_kind::S_YYEOF;
   const std::string found = atEnd ? "end of file" : "'" + lexer.currentText() + "'";
-  if (semicolonExpected && !lexer.previousText().empty())
+  const bool atStatementStart = contains(expected, "'For'");
+  if (contains(expected, "';'") && !atStatementStart && !lexer.previousText().empty())
     throw SyntaxError(endOf(lexer.previousLocation()),
                       "expected ';' after '" + lexer.previousText() + "' (found " + found + ")");
+  for (std::string_view closer : {"'EndFor'", "'EndIf'", "'Return'"})
+    if (atEnd && contains(expected, closer))
+      throw SyntaxError(at(context.location()),
+                        "unexpected end of file, expected " + std::string(closer));
+  std::vector<std::string> useful;
+  for (const auto& name : expected)
+    if (!continuesExpression(name)) useful.push_back(name);
   std::string message = "unexpected " + found;
-  if (count > 0 && count < kMaxExpected) {
-    message += ", expected ";
-    for (int i = 0; i < count; ++i) {
-      if (i > 0) message += i + 1 == count ? " or " : ", ";
-      message += describe(expected[i]);
-    }
-  }
+  if (contains(useful, "number"))
+    message += ", expected an expression";
+  else if (!useful.empty() && useful.size() <= 6)
+    message += ", expected " + listed(useful);
   throw SyntaxError(at(context.location()), message);
 }
 

@@ -8,6 +8,7 @@
 %define api.filename.type {const std::string}
 %define api.token.prefix {TOK_}
 %define parse.error custom
+%define parse.lac full
 %locations
 %param {Lexer& lexer}
 %parse-param {ast::StmtList& program}
@@ -162,9 +163,9 @@ command:
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
     auto name = makeExpr(ExprKind::String, @2); name->text = std::move($2);
     c.args.push_back(std::move(name)); $$ = makeStmt(std::move(c), @1); }
-| words '(' args_opt ')' '=' block_parts ';' {
+| words '(' args_opt ')' assign_op block_parts ';' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
-    c.args = std::move($3); c.op = "=";
+    c.args = std::move($3); c.op = std::move($5);
     auto s = makeExpr(ExprKind::Shape, @6); s->parts = std::move($6); c.value = std::move(s);
     $$ = makeStmt(std::move(c), @1); }
 | words '=' expr ';' {
@@ -175,7 +176,7 @@ command:
     auto s = makeExpr(ExprKind::Shape, @1); s->words = c.words; s->parts = std::move($3);
     c.shape = std::move(s); $$ = makeStmt(std::move(c), @1); }
 | shape { $$ = grammar::shapeCommand(std::move($1), @1); }
-| shape tail {
+| shape tail ';' {
     $$ = grammar::shapeCommand(std::move($1), @1);
     std::get<CommandStmt>($$->node).tail = std::move($2); }
 | shape '=' expr ';' {
@@ -360,6 +361,9 @@ primary:
 | '{' items '}' { $$ = makeExpr(ExprKind::List, @1); $$->args = std::move($2); }
 | option_path { $$ = std::move($1); }
 | shape { $$ = std::move($1); }
+| words '(' args_opt ')' {
+    $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);
+    $$->parts.emplace_back(); $$->parts.back().items = std::move($3); }
 | words IN shape {
     $$ = std::move($3); $1.push_back("In");
     $1.insert($1.end(), $$->words.begin(), $$->words.end()); $$->words = std::move($1); }

@@ -8,6 +8,8 @@ namespace geomesh {
 
 namespace {
 
+constexpr double kMaxListSize = 10'000'000;
+
 double combine(double old, double operand, const std::string& op) {
   if (op == "+=" || op == "++") return old + operand;
   if (op == "-=" || op == "--") return old - operand;
@@ -96,6 +98,9 @@ void Interpreter::assignElements(const ast::LValue& target, const std::string& n
                     " values");
   for (std::size_t i = 0; i < indices.size(); ++i) {
     if (indices[i] < 0) fail(target.index->loc, "negative index in '" + name + "'");
+    if (indices[i] >= kMaxListSize)
+      fail(target.index->loc, "index " + std::to_string(static_cast<long long>(indices[i])) +
+                                  " is beyond the largest list size");
     const auto index = static_cast<std::size_t>(indices[i]);
     const std::size_t from = value.size() == 1 ? 0 : i;
     if (list.isText()) {

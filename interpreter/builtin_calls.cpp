@@ -4,50 +4,43 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "interpreter/script_interpreter.h"
 #include "interpreter/session.h"
 #include "stdlib/format.h"
 #include "stdlib/ranges.h"
+#include "stdlib/system_info.h"
 
 namespace geomesh {
 
 namespace {
 
 constexpr std::string_view kFunctionNames[] = {
-    "AbsolutePath", "DirName", "Exists", "FileExists", "GetEnv", "GetNumber", "GetString",
+    "AbsolutePath", "DirName", "Exists", "FileExists", "Find", "ListFromFile", "GetEnv", "GetNumber", "GetString",
     "GetValue", "LinSpace", "LogSpace", "LowerCase", "NameToString", "Sprintf", "Str", "StrCat",
     "StrChoice", "StrCmp", "StrFind", "StrLen", "StrPrefix", "StrRelative", "StrReplace",
     "StrSub", "Unique", "UpperCase", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Atan2",
     "Sinh", "Cosh", "Tanh", "Exp", "Log", "Log10", "Sqrt", "Fabs", "Abs", "Floor", "Ceil",
     "Round", "Fmod", "Modulo", "Hypot", "Rand", "Max", "Min", "Sign", "Step"};
 
-std::string withoutExtension(const std::string& s) {
-  auto dot = s.find_last_of('.');
-  auto slash = s.find_last_of("/\\");
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return s;
-  return s.substr(0, dot);
-}
-
-std::string withoutDirectory(const std::string& s) {
-  auto slash = s.find_last_of("/\\");
-  return slash == std::string::npos ? s : s.substr(slash + 1);
-}
-
-std::string directoryWithSlash(const std::string& s) {
-  auto slash = s.find_last_of("/\\");
-  return slash == std::string::npos ? std::string() : s.substr(0, slash + 1);
-}
-
 }  // namespace
 
 Value Interpreter::callFunction(const ast::Expr& call) {
   const std::string& name = call.text;
   if (isMathFunction(name)) {
-    std::vector<double> args;
-    for (const auto& arg : call.args) args.push_back(evaluateNumber(*arg));
     try {
+      // A one-argument function applies item by item to a list: Abs(a[]).
+      if (call.args.size() == 1) {
+        Value arg = evaluate(*call.args[0]);
+        if (arg.kind() == Value::Kind::List) {
+          for (double& x : arg.numbers()) x = *callMathFunction(name, std::span(&x, 1), random_);
+          return arg;
+        }
+      }
+      std::vector<double> args;
+      for (const auto& arg : call.args) args.push_back(evaluateNumber(*arg));
       return Value::number(*callMathFunction(name, args, random_));
     } catch (const std::invalid_argument& error) {
       fail(call.loc, error.what());
@@ -88,98 +81,34 @@ std::string Interpreter::format(const ast::ExprList& args, const SourceLocation&
   }
 }
 
-std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
-  const std::string& name = call.text;
-  const auto& args = call.args;
-  auto arity = [&](std::size_t low, std::size_t high) {
-    if (args.size() < low || args.size() > high)
-      fail(call.loc, "'" + name + "' takes " + std::to_string(low) +
-                         (high != low ? " to " + std::to_string(high) : std::string()) +
-                         " arguments, not " + std::to_string(args.size()));
-  };
-  auto str = [&](std::size_t i) { return evaluateString(*args[i]); };
-  if (name == "StrCat" || name == "Str") {
-    std::vector<std::string> parts;
-    for (const auto& arg : args) {
-      Value v = evaluate(*arg);
-      if (v.isText())
-        parts.insert(parts.end(), v.strings().begin(), v.strings().end());
-      else
-        for (double x : v.numbers()) parts.push_back(formatPrintf("%g", std::vector<FormatArgument>{x}));
-    }
-    if (name == "Str" && parts.size() != 1) return Value::stringList(std::move(parts));
-    std::string joined;
-    for (const auto& p : parts) joined += p;
-    return Value::string(joined);
-  }
-  if (name == "Sprintf") { arity(1, 1000); return Value::string(format(args, call.loc)); }
-  if (name == "StrPrefix") { arity(1, 1); return Value::string(withoutExtension(str(0))); }
-  if (name == "StrRelative") { arity(1, 1); return Value::string(withoutDirectory(str(0))); }
-  if (name == "DirName") { arity(1, 1); return Value::string(directoryWithSlash(str(0))); }
-  if (name == "AbsolutePath") {
-    arity(1, 1);
-    std::filesystem::path p = str(0);
-    if (p.is_relative()) p = std::filesystem::absolute(std::filesystem::path(directoryOf(call.loc.file)) / p);
-    return Value::string(p.lexically_normal().string());
-  }
-  if (name == "StrSub") {
-    arity(2, 3);
-    std::string s = str(0);
-    auto from = static_cast<std::size_t>(std::max(0.0, evaluateNumber(*args[1])));
-    std::size_t count = args.size() > 2 ? static_cast<std::size_t>(std::max(0.0, evaluateNumber(*args[2])))
-                                        : std::string::npos;
-    return Value::string(from < s.size() ? s.substr(from, count) : std::string());
-  }
-  if (name == "StrLen") { arity(1, 1); return Value::number(static_cast<double>(str(0).size())); }
-  if (name == "StrFind") {
-    arity(2, 2);
-    return Value::number(str(0).find(str(1)) != std::string::npos ? 1 : 0);
-  }
-  if (name == "StrCmp") {
-    arity(2, 2);
-    int c = str(0).compare(str(1));
-    return Value::number(c < 0 ? -1 : (c > 0 ? 1 : 0));
-  }
-  if (name == "StrChoice") {
-    arity(3, 3);
-    return Value::string(evaluateNumber(*args[0]) != 0 ? str(1) : str(2));
-  }
-  if (name == "StrReplace") {
-    arity(3, 3);
-    std::string s = str(0), from = str(1), to = str(2);
-    for (std::size_t at = from.empty() ? std::string::npos : s.find(from); at != std::string::npos;
-         at = s.find(from, at + to.size()))
-      s.replace(at, from.size(), to);
-    return Value::string(s);
-  }
-  if (name == "UpperCase" || name == "LowerCase") {
-    arity(1, 1);
-    std::string s = str(0);
-    for (char& c : s)
-      c = static_cast<char>(name == "UpperCase" ? std::toupper(static_cast<unsigned char>(c))
-                                                : std::tolower(static_cast<unsigned char>(c)));
-    return Value::string(s);
-  }
-  if (name == "GetEnv") {
-    arity(1, 1);
-    const char* value = std::getenv(str(0).c_str());
-    return Value::string(value ? value : "");
-  }
-  if (name == "NameToString") {
-    arity(1, 1);
-    if (args[0]->kind != ast::ExprKind::Variable) fail(args[0]->loc, "NameToString takes a variable name");
-    return Value::string(resolveName(args[0]->name));
-  }
-  return std::nullopt;
-}
-
 std::optional<Value> Interpreter::callListFunction(const ast::Expr& call) {
   const std::string& name = call.text;
   if (name == "LinSpace" || name == "LogSpace") {
     if (call.args.size() != 3) fail(call.loc, "'" + name + "' takes 3 arguments");
     const double a = evaluateNumber(*call.args[0]), b = evaluateNumber(*call.args[1]);
-    const int n = static_cast<int>(evaluateNumber(*call.args[2]));
+    const double count = evaluateNumber(*call.args[2]);
+    if (count > 10'000'000) fail(call.args[2]->loc, "'" + name + "' asks for too many values");
+    const int n = static_cast<int>(count);
     return Value::list(name == "LinSpace" ? linSpace(a, b, n) : logSpace(a, b, n));
+  }
+  if (name == "Find") {
+    if (call.args.size() != 2) fail(call.loc, "Find takes 2 lists");
+    const std::vector<double> in = evaluateNumbers(*call.args[0]);
+    double found = 0;
+    for (double x : evaluateNumbers(*call.args[1]))
+      if (std::find(in.begin(), in.end(), x) != in.end()) ++found;
+    return Value::number(found);
+  }
+  if (name == "ListFromFile") {
+    if (call.args.size() != 1) fail(call.loc, "ListFromFile takes a file name");
+    std::filesystem::path path = evaluateString(*call.args[0]);
+    if (path.is_relative()) path = std::filesystem::path(directoryOf(call.loc.file)) / path;
+    std::ifstream in(path);
+    if (!in) fail(call.args[0]->loc, "cannot open '" + path.string() + "'");
+    std::vector<double> values;
+    for (double x; in >> x;) values.push_back(x);
+    if (!in.eof()) fail(call.args[0]->loc, "'" + path.string() + "' holds something other than numbers");
+    return Value::list(std::move(values));
   }
   if (name == "Unique") {
     std::vector<double> values = evaluateNumbers(call.args);
@@ -202,7 +131,8 @@ std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
     if (args.size() != 1) fail(call.loc, "FileExists takes a file name");
     std::filesystem::path p = evaluateString(*args[0]);
     if (p.is_relative()) p = std::filesystem::path(directoryOf(call.loc.file)) / p;
-    return Value::number(std::filesystem::exists(p) ? 1 : 0);
+    std::error_code ignored;
+    return Value::number(std::filesystem::exists(p, ignored) ? 1 : 0);
   }
   if (name == "GetNumber" || name == "GetValue") {
     if (args.empty() || args.size() > 2) fail(call.loc, "'" + name + "' takes 1 or 2 arguments");
@@ -229,7 +159,8 @@ std::optional<Value> Interpreter::builtinConstant(std::string_view name) {
   if (name == "MPI_Size") return Value::number(1);
   if (name == "MPI_Rank") return Value::number(0);
   if (name == "Cpu") return Value::number(static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
-  if (name == "Memory" || name == "TotalMemory") return Value::number(0);
+  if (name == "Memory") return Value::number(processMemoryMegabytes());
+  if (name == "TotalMemory") return Value::number(totalMemoryMegabytes());
   GeoFactory& geo = session_.geo();
   int region = maxPhysicalTag_;
   for (int kind : {1, 2, 3, int(GeoFactory::kCurveLoop), int(GeoFactory::kSurfaceLoop)})

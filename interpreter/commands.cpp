@@ -18,6 +18,14 @@ std::string joined(const std::vector<std::string>& words) {
   return text;
 }
 
+// How a warning names a command: "Transfinite Curve", "Point In Surface".
+std::string commandName(const ast::CommandStmt& command) {
+  std::string name = joined(command.words);
+  if (!command.tail.empty() && command.tail[0].word == "In" && command.tail[0].value)
+    name += " In " + joined(command.tail[0].value->words);
+  return name;
+}
+
 // Statements that only concern the graphical interface or post-processing: batch runs
 // ignore them.
 bool isInterfaceOnly(const std::string& word) {
@@ -66,7 +74,11 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
     const std::string factory = evaluateString(*command.args[0]);
     if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
   }
-  warn(where, "'" + joined(command.words) + "' is not supported yet; ignored");
+  if (head == "Mesh" && command.words.size() == 1) {
+    warn(where, "'Mesh' in a script is not supported yet; ignored (mesh with -1, -2 or -3)");
+    return;
+  }
+  warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
 }
 
 void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLocation& where) {
@@ -139,8 +151,10 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
 }
 
 Value Interpreter::optionValue(const ast::Expr& expr) {
-  if (!isOptionCategory(expr.text) || !expr.args.empty())
-    fail(expr.loc, "reading option '" + expr.text + "' is not supported");
+  if (!isOptionCategory(expr.text) || !expr.args.empty()) {
+    warn(expr.loc, "option '" + expr.text + "' is not supported yet; reads as 0");
+    return Value::number(0);
+  }
   const OptionRegistry& options = session_.options();
   const auto* option = options.find(expr.text);
   if (!option)

@@ -55,6 +55,7 @@ bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceL
     definePhysical(command, physical, where);
     return true;
   }
+  if (w == Words{"Circle"} && command.op == "=") return defineCircleArc(command, where);
   const bool known = w == Words{"Point"} || w == Words{"Line"} || w == Words{"Curve", "Loop"} ||
                      w == Words{"Line", "Loop"} || w == Words{"Plane", "Surface"} ||
                      w == Words{"Surface", "Loop"} || w == Words{"Volume"};
@@ -85,6 +86,20 @@ bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceL
     } else {
       session_.geo().addVolume(tag, tags);
     }
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+  return true;
+}
+
+// Circle(tag) = {start, center, end}: an arc of at most half a turn. Other forms (the
+// OpenCASCADE {x, y, z, r} circle) are not supported by the built-in kernel.
+bool Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where) {
+  const int tag = entityTag(command, where);
+  const std::vector<int> points = entityTags(*command.value);
+  if (points.size() != 3) return false;
+  try {
+    session_.geo().addCircleArc(tag, points[0], points[1], points[2]);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }

@@ -1,5 +1,6 @@
 #include "interpreter/interpreter.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -86,16 +87,40 @@ void Interpreter::execute(const ast::Stmt& statement) {
       statement.node);
 }
 
+// For i In {a:b:c} counts from a by c (default 1, whatever the direction) while it has not
+// passed b; afterwards i holds the first value past the end, as in Gmsh. Other lists are
+// walked item by item and leave i at the last item.
 void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& where) {
-  std::vector<double> values = evaluateNumbers(*loop.range);
-  if (values.size() > kMaxLoopIterations)
-    fail(where, "loop has " + std::to_string(values.size()) + " iterations, more than the limit of " +
-                    std::to_string(kMaxLoopIterations));
+  const ast::Expr* range = loop.range.get();
+  if (range->kind == ast::ExprKind::List && range->args.size() == 1 &&
+      range->args[0]->kind == ast::ExprKind::Range)
+    range = range->args[0].get();
   const std::string variable = loop.variable.base.empty() ? "" : resolveName(loop.variable);
+  std::vector<double> values;
+  double after = 0;
+  if (range->kind == ast::ExprKind::Range) {
+    const double first = evaluateNumber(*range->args[0]);
+    const double last = evaluateNumber(*range->args[1]);
+    const double step = range->args.size() > 2 ? evaluateNumber(*range->args[2]) : 1.0;
+    if (step == 0) fail(range->loc, "loop step must not be zero");
+    const double count = std::floor((last - first) / step + 1e-10 * std::max(1.0, std::fabs((last - first) / step))) + 1;
+    if (count > static_cast<double>(kMaxLoopIterations))
+      fail(where, "loop has more than " + std::to_string(kMaxLoopIterations) + " iterations");
+    for (long long i = 0; i < static_cast<long long>(count); ++i)
+      values.push_back(first + static_cast<double>(i) * step);
+    after = first + static_cast<double>(values.size()) * step;
+  } else {
+    values = evaluateNumbers(*range);
+    if (values.size() > kMaxLoopIterations)
+      fail(where, "loop has more than " + std::to_string(kMaxLoopIterations) + " iterations");
+    if (!values.empty()) after = values.back();
+  }
   for (double value : values) {
     if (!variable.empty()) variables_[variable] = Value::number(value);
     execute(loop.body);
   }
+  if (!variable.empty() && (range->kind == ast::ExprKind::Range || !values.empty()))
+    variables_[variable] = Value::number(after);
 }
 
 void Interpreter::executeIf(const ast::IfStmt& branches) {
@@ -149,7 +174,7 @@ void Interpreter::executeInclude(const ast::CommandStmt& command, const SourceLo
   for (const auto& open : includeStack_)
     if (open == canonical) fail(command.args[0]->loc, "include cycle: '" + shown + "' is already being read");
   auto text = readFile(shown);
-  if (!text || std::filesystem::is_directory(path))
+  if (!text || std::filesystem::is_directory(path, ignored))
     fail(command.args[0]->loc, "cannot open include file '" + shown + "'");
   includeStack_.push_back(canonical);
   try {

@@ -60,8 +60,10 @@ Value Interpreter::binaryValue(const ast::Expr& expr) {
                        right.describe());
   const auto& a = left.numbers();
   const auto& b = right.numbers();
-  if (op == "%" && b.size() == 1 && static_cast<long long>(b[0]) == 0)
-    fail(expr.loc, "modulo by zero");
+  for (double divisor : b) {
+    if (op == "%" && static_cast<long long>(divisor) == 0) fail(expr.loc, "modulo by zero");
+    if (op == "/" && divisor == 0) fail(expr.loc, "division by zero");
+  }
   if (left.kind() == Value::Kind::Number && right.kind() == Value::Kind::Number)
     return Value::number(isArithmetic(op) ? arithmetic(op, a[0], b[0]) : comparison(op, a[0], b[0]));
   if (!isArithmetic(op)) fail(expr.loc, "'" + op + "' compares numbers, not lists");

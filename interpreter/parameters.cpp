@@ -44,22 +44,24 @@ void Interpreter::executeDefineConstant(const ast::DefineConstantStmt& define) {
 
 Value Interpreter::defineNumber(const ast::Expr& expr) {
   const auto label = parameterName(expr.attributes);
-  if (label) {
-    if (auto it = session_.numberOverrides().find(*label); it != session_.numberOverrides().end())
-      return Value::number(it->second);
-  }
-  const double value = evaluateNumber(*expr.args[0]);
+  double value = 0;
+  auto& overrides = session_.numberOverrides();
+  if (auto it = label ? overrides.find(*label) : overrides.end(); it != overrides.end())
+    value = it->second;
+  else
+    value = evaluateNumber(*expr.args[0]);
   if (label) parameterNumbers_[*label] = value;
   return Value::number(value);
 }
 
 Value Interpreter::defineString(const ast::Expr& expr) {
   const auto label = parameterName(expr.attributes);
-  if (label) {
-    if (auto it = session_.stringOverrides().find(*label); it != session_.stringOverrides().end())
-      return Value::string(it->second);
-  }
-  std::string value = evaluateString(*expr.args[0]);
+  std::string value;
+  auto& overrides = session_.stringOverrides();
+  if (auto it = label ? overrides.find(*label) : overrides.end(); it != overrides.end())
+    value = it->second;
+  else
+    value = evaluateString(*expr.args[0]);
   if (label) parameterStrings_[*label] = value;
   return Value::string(std::move(value));
 }

@@ -71,6 +71,7 @@ class Interpreter {
   void executeCommand(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrintf(const ast::CommandStmt& command, const SourceLocation& where);
   bool executeGeometry(const ast::CommandStmt& command, const SourceLocation& where);
+  bool defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<int> entityTags(const ast::Expr& list);

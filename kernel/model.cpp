@@ -115,9 +115,13 @@ std::vector<int> Model::upward(EntityId e) const {
   auto it = upward_.find(e);
   if (it == upward_.end()) return {};
   std::vector<int> out;
-  // Entities may have been replaced since; keep only those that still exist.
-  for (int tag : it->second)
-    if (contains({e.dim + 1, tag})) out.push_back(tag);
+  // Entities may have been replaced or removed since: keep those whose current boundary still
+  // holds e.
+  for (int tag : it->second) {
+    const std::vector<int> b = boundary({e.dim + 1, tag});
+    if (std::any_of(b.begin(), b.end(), [&](int t) { return std::abs(t) == e.tag; }))
+      out.push_back(tag);
+  }
   return out;
 }
 

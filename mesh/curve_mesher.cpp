@@ -9,16 +9,43 @@
 namespace geomesh {
 namespace {
 
-// Arc length of the curve over [a, b] by 5-point Gauss-Legendre quadrature.
-double arcLength(const CurveGeometry& g, double a, double b) {
-  static constexpr double kX[5] = {0.0, -0.5384693101056831, 0.5384693101056831,
-                                   -0.9061798459386640, 0.9061798459386640};
-  static constexpr double kW[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
-                                   0.2369268850561891, 0.2369268850561891};
+constexpr double kGaussX[5] = {0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
+                               0.9061798459386640};
+constexpr double kGaussW[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                               0.2369268850561891, 0.2369268850561891};
+constexpr double kPi = 3.14159265358979323846;
+// Segments a full turn of the tangent gets at least, however large the size: a circle is
+// never meshed coarser than a hexagon.
+constexpr double kSegmentsPerTurn = 6;
+
+// The integral of f over [a, b] by 5-point Gauss-Legendre quadrature.
+template <class F>
+double gauss(double a, double b, F f) {
   const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
   double sum = 0;
-  for (int i = 0; i < 5; ++i) sum += kW[i] * norm(g.firstDerivative(mid + half * kX[i]));
+  for (int i = 0; i < 5; ++i) sum += kGaussW[i] * f(mid + half * kGaussX[i]);
   return sum * half;
+}
+
+double arcLength(const CurveGeometry& g, double a, double b) {
+  return gauss(a, b, [&](double t) { return norm(g.firstDerivative(t)); });
+}
+
+// Total turning of the tangent along the curve (the integral of the curvature over arc
+// length): zero for a segment, the opening angle for a circular arc.
+double turningAngle(const CurveGeometry& g, Interval range) {
+  constexpr int kPieces = 64;
+  double total = 0;
+  for (int k = 0; k < kPieces; ++k) {
+    const double a = range.min + (range.max - range.min) * k / kPieces;
+    const double b = range.min + (range.max - range.min) * (k + 1) / kPieces;
+    total += gauss(a, b, [&](double t) {
+      const Vec3 d1 = g.firstDerivative(t);
+      const double speed2 = dot(d1, d1);
+      return speed2 > 0 ? norm(cross(d1, g.secondDerivative(t))) / speed2 : 0.0;
+    });
+  }
+  return total;
 }
 
 // Cumulative arc length at evenly spaced parameters, and its inverse.
@@ -73,7 +100,7 @@ class SizeIntegral {
   double total() const { return cumulative_.back(); }
   double size(double sigma) const {
     const double f = length_ > 0 ? sigma / length_ : 0;
-    return rules_.finish(h0_ + (h1_ - h0_) * f);
+    return rules_.finish((1 - f) * h0_ + f * h1_);  // exact at both ends, even for 1e22
   }
   // The arc length where the integral reaches `value`.
   double arcLengthAt(double value) const {
@@ -91,7 +118,8 @@ class SizeIntegral {
   std::vector<double> cumulative_;
 };
 
-int segmentCount(double integral, bool closed) {
+int segmentCount(double integral, double turning, bool closed) {
+  integral = std::max(integral, turning * kSegmentsPerTurn / (2 * kPi));
   // Rounded up, except that up to 1% above a whole number is forgiven.
   const int n = static_cast<int>(std::floor(integral + 0.99));
   return std::max(n, closed ? 3 : 1);
@@ -117,9 +145,10 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   const bool closed = curve.startPoint == curve.endPoint;
 
   const ArcLengthTable arc(g, range);
-  const SizeIntegral integral(arc.length(), rules.pointSize(*start), rules.pointSize(*end), rules);
+  const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
+  const SizeIntegral integral(arc.length(), startSize, endSize, rules);
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
-  const int segments = segmentCount(integral.total(), closed);
+  const int segments = segmentCount(integral.total(), turningAngle(g, range), closed);
 
   EntityMesh& em = mesh.entity(id);
   em.nodes.clear();
@@ -128,9 +157,8 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   std::vector<NodeIndex> chain{pointNode(mesh, curve.startPoint)};
   for (int k = 1; k < segments; ++k) {
     const double sigma = integral.arcLengthAt(integral.total() * k / segments);
-    const double t = arc.length() > 0
-                         ? arc.parameterAt(sigma)
-                         : range.min + (range.max - range.min) * k / segments;
+    const double t = arc.length() > 0 ? arc.parameterAt(sigma)
+                                      : range.min + (range.max - range.min) * k / segments;
     const NodeIndex node = mesh.addNode(g.point(t));
     if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
     nodeSizes[node] = integral.size(sigma);

@@ -10,9 +10,10 @@ namespace geomesh {
 
 // Meshes one curve whose end points are already meshed (generateMesh's 0D stage). The target
 // size varies linearly in arc length between the sizes of the end points (SizeRules); the
-// curve gets max(1, the integral of 1/size, rounded up unless within 1% below) segments, at
-// least 3 when closed, and its nodes split that integral into equal parts. Adds the interior
-// nodes with their parameters and the Line2 elements from start to end; nodeSizes (indexed
+// curve gets as many segments as the integral of 1/size, rounded up unless within 1% above
+// a whole number; at least 1, 3 when closed, and 6 per full turn of its tangent (a circular
+// arc of angle a gets at least 6a/2pi). Its nodes split that integral into equal parts. Adds the
+// interior nodes with their parameters and the Line2 elements from start to end; nodeSizes (indexed
 // by node) receives the target size at each new node.
 void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
                std::vector<double>& nodeSizes);

@@ -12,9 +12,15 @@ namespace {
 constexpr std::uint32_t kNext[3] = {1, 2, 0};
 constexpr std::uint32_t kPrev[3] = {2, 0, 1};
 
-std::uint32_t triangleOfCorner(std::uint32_t c) { return c / 3; }
-std::uint32_t nextCorner(std::uint32_t c) { return c - c % 3 + kNext[c % 3]; }
-std::uint32_t prevCorner(std::uint32_t c) { return c - c % 3 + kPrev[c % 3]; }
+std::uint32_t triangleOfCorner(std::uint32_t c) {
+  return c / 3;
+}
+std::uint32_t nextCorner(std::uint32_t c) {
+  return c - c % 3 + kNext[c % 3];
+}
+std::uint32_t prevCorner(std::uint32_t c) {
+  return c - c % 3 + kPrev[c % 3];
+}
 
 }  // namespace
 
@@ -96,7 +102,15 @@ std::uint32_t Triangulation2D::locate(Vec2 p, std::uint32_t start) {
   }
 }
 
-bool Triangulation2D::growCavity(std::uint32_t v, std::uint32_t containing) {
+bool Triangulation2D::inCircumcircle(std::uint32_t t, Vec2 p, const MetricFrame* metric) const {
+  const std::uint32_t* w = &vertex_[3 * t];
+  if (!metric) return incircle(points_[w[0]], points_[w[1]], points_[w[2]], p) > 0;
+  return incircle(metric->apply(points_[w[0]]), metric->apply(points_[w[1]]),
+                  metric->apply(points_[w[2]]), metric->apply(p)) > 0;
+}
+
+bool Triangulation2D::growCavity(std::uint32_t v, std::uint32_t containing,
+                                 const MetricFrame* metric) {
   ++epoch_;
   const std::uint32_t inside = 2 * epoch_, outside = 2 * epoch_ + 1;
   const Vec2 p = points_[v];
@@ -112,8 +126,7 @@ bool Triangulation2D::growCavity(std::uint32_t v, std::uint32_t containing) {
         const std::uint32_t n = triangleOfCorner(across);
         if (mark_[n] == inside) continue;
         if (mark_[n] != outside) {
-          const std::uint32_t* w = &vertex_[3 * n];
-          if (incircle(points_[w[0]], points_[w[1]], points_[w[2]], p) > 0) {
+          if (inCircumcircle(n, p, metric)) {
             mark_[n] = inside;
             cavity_.push_back(n);
             continue;
@@ -124,17 +137,27 @@ bool Triangulation2D::growCavity(std::uint32_t v, std::uint32_t containing) {
       rimEdges_.push_back({vertex_[nextCorner(c)], vertex_[prevCorner(c)], across, kind_[c]});
     }
   }
-  for (const RimEdge& e : rimEdges_)
+  for (const CavityEdge& e : rimEdges_)
     if (orient2d(points_[e.a], points_[e.b], p) <= 0) return false;
   return true;
 }
 
 Triangulation2D::InsertStatus Triangulation2D::insert(std::uint32_t v, std::uint32_t containing) {
+  const InsertStatus status = findCavity(v, containing);
+  if (status == InsertStatus::Inserted) commitCavity(v);
+  return status;
+}
+
+Triangulation2D::InsertStatus Triangulation2D::findCavity(std::uint32_t v, std::uint32_t containing,
+                                                          const MetricFrame* metric) {
   const Vec2 p = points_[v];
   for (std::uint32_t c = 3 * containing; c < 3 * containing + 3; ++c)
     if (points_[vertex_[c]] == p) return InsertStatus::Duplicate;
-  if (!growCavity(v, containing)) return InsertStatus::Rejected;
+  if (!growCavity(v, containing, metric)) return InsertStatus::Rejected;
+  return InsertStatus::Inserted;
+}
 
+void Triangulation2D::commitCavity(std::uint32_t v) {
   created_.clear();
   rim_.clear();
   const std::size_t count = rimEdges_.size();
@@ -149,7 +172,7 @@ Triangulation2D::InsertStatus Triangulation2D::insert(std::uint32_t v, std::uint
       kind_.resize(kind_.size() + 3);
       mark_.push_back(0);
     }
-    const RimEdge& e = rimEdges_[j];
+    const CavityEdge& e = rimEdges_[j];
     setTriangle(t, e.a, e.b, v);
     link(3 * t + 2, e.outside, e.kind);
     created_.push_back(t);
@@ -166,7 +189,6 @@ Triangulation2D::InsertStatus Triangulation2D::insert(std::uint32_t v, std::uint
     const auto it = std::lower_bound(byStart.begin(), byStart.end(), std::pair{b, 0u});
     link(3 * created_[j], 3 * it->second + 1, EdgeKind::Free);
   }
-  return InsertStatus::Inserted;
 }
 
 std::uint32_t Triangulation2D::findEdge(std::uint32_t a, std::uint32_t b) const {
@@ -216,8 +238,8 @@ bool Triangulation2D::shouldFlip(std::uint32_t c) const {
   const std::uint32_t across = neighbour_[c];
   if (across == kNone || kind_[c] != EdgeKind::Free) return false;
   const std::uint32_t t = triangleOfCorner(c);
-  return incircle(points_[vertex_[3 * t]], points_[vertex_[3 * t + 1]],
-                  points_[vertex_[3 * t + 2]], points_[vertex_[across]]) > 0;
+  return incircle(points_[vertex_[3 * t]], points_[vertex_[3 * t + 1]], points_[vertex_[3 * t + 2]],
+                  points_[vertex_[across]]) > 0;
 }
 
 void Triangulation2D::restoreDelaunay(std::vector<std::uint32_t> stack) {

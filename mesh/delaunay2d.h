@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernel/vec3.h"
+#include "mesh/surface_metric.h"
 
 namespace geomesh {
 
@@ -55,7 +56,21 @@ class Triangulation2D {
   // cavity of triangles whose circumcircle holds the point, grown without crossing non-free
   // edges, is replaced by a fan around v. Rejected when v lies on a non-free edge.
   InsertStatus insert(std::uint32_t v, std::uint32_t containing);
-  // Triangles created (or reused) by the last successful insert().
+  // The same in two steps: findCavity() changes nothing, so the caller may look at the
+  // boundary of the cavity, whose vertices become v's neighbours, before commitCavity() or
+  // giving up. With a
+  // metric frame, circumcircles are taken after mapping the points by it (an anisotropic
+  // Delaunay kernel, as for curved surfaces); Rejected if that cavity is not star-shaped.
+  InsertStatus findCavity(std::uint32_t v, std::uint32_t containing,
+                          const MetricFrame* metric = nullptr);
+  struct CavityEdge {
+    std::uint32_t a, b;     // counter-clockwise seen from inside the cavity
+    std::uint32_t outside;  // corner across it, or kNone
+    EdgeKind kind;
+  };
+  std::span<const CavityEdge> cavityBoundary() const { return rimEdges_; }
+  void commitCavity(std::uint32_t v);
+  // Triangles created (or reused) by the last insertion.
   std::span<const std::uint32_t> created() const { return created_; }
   // Corners of the triangles outside the last cavity that face it (in created() order).
   std::span<const std::uint32_t> cavityRim() const { return rim_; }
@@ -73,14 +88,9 @@ class Triangulation2D {
  private:
   void setTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c);
   void link(std::uint32_t c1, std::uint32_t c2, EdgeKind k);
-  bool growCavity(std::uint32_t v, std::uint32_t containing);
+  bool growCavity(std::uint32_t v, std::uint32_t containing, const MetricFrame* metric);
+  bool inCircumcircle(std::uint32_t t, Vec2 p, const MetricFrame* metric) const;
   std::uint32_t nextRandom();
-
-  struct RimEdge {
-    std::uint32_t a, b;      // cavity boundary edge, counter-clockwise seen from the cavity
-    std::uint32_t outside;   // corner across it, or kNone
-    EdgeKind kind;
-  };
 
   std::vector<Vec2> points_;
   std::vector<std::uint32_t> vertex_;
@@ -91,7 +101,7 @@ class Triangulation2D {
   std::uint32_t epoch_ = 0;
   std::uint32_t random_ = 2463534242u;
   std::vector<std::uint32_t> cavity_, created_, rim_;
-  std::vector<RimEdge> rimEdges_;
+  std::vector<CavityEdge> rimEdges_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> fanIndex_;
 };
 

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace geomesh {
 namespace {
 
 // A triangle is good once its circumradius is below this multiple of the circumradius of the
 // equilateral triangle of the target size.
-constexpr double kAcceptRatio = 1.4;
+constexpr double kAcceptRatio = 1.2;
 // A new point closer than this fraction of the target size to a vertex is not inserted.
 constexpr double kMinSpacing = 0.5;
 constexpr double kSqrt3 = 1.7320508075688772;
@@ -25,8 +26,12 @@ struct HeapEntry {
   }
 };
 
-Vec2 sub(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
-double length(Vec2 a) { return std::hypot(a.u, a.v); }
+Vec2 sub(Vec2 a, Vec2 b) {
+  return {a.u - b.u, a.v - b.v};
+}
+double length(Vec2 a) {
+  return std::sqrt(a.u * a.u + a.v * a.v);
+}
 
 Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 ab = sub(b, a), ac = sub(c, a);
@@ -38,8 +43,8 @@ Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
 class FrontalRefiner {
  public:
   FrontalRefiner(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                 std::vector<double>& sizes)
-      : tri_(tri), inside_(inside), sizes_(sizes) {}
+                 std::vector<double>& sizes, const SurfaceMetric* metric)
+      : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric) {}
 
   void run() {
     const std::uint32_t n = static_cast<std::uint32_t>(tri_.triangleCount());
@@ -61,10 +66,24 @@ class FrontalRefiner {
   Vec2 p(std::uint32_t t, int i) const { return tri_.point(tri_.vertex(3 * t + i)); }
   double targetSize(std::uint32_t t) const {
     return (sizes_[tri_.vertex(3 * t)] + sizes_[tri_.vertex(3 * t + 1)] +
-            sizes_[tri_.vertex(3 * t + 2)]) / 3;
+            sizes_[tri_.vertex(3 * t + 2)]) /
+           3;
   }
-  double ratio(std::uint32_t t) const {
+  // Lengths near x on the surface are Euclidean lengths after this map.
+  MetricFrame frameAt(Vec2 x) const {
+    return metric_ ? MetricFrame(metric_->at(x)) : MetricFrame();
+  }
+  Vec2 centroid(std::uint32_t t) const {
     const Vec2 a = p(t, 0), b = p(t, 1), c = p(t, 2);
+    return {(a.u + b.u + c.u) / 3, (a.v + b.v + c.v) / 3};
+  }
+
+  double ratio(std::uint32_t t) const {
+    Vec2 a = p(t, 0), b = p(t, 1), c = p(t, 2);
+    if (metric_) {
+      const MetricFrame f = frameAt(centroid(t));
+      a = f.apply(a), b = f.apply(b), c = f.apply(c);
+    }
     const double area2 = std::abs((b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u));
     const double radius = length(sub(b, a)) * length(sub(c, b)) * length(sub(a, c)) / (2 * area2);
     return radius * kSqrt3 / targetSize(t);
@@ -101,21 +120,24 @@ class FrontalRefiner {
     return best;
   }
 
-  // Where to put the new point in front of the edge of `corner` (Rebay's placement).
+  // Where to put the new point in front of the edge of `corner` (Rebay's placement), in the
+  // metric of the edge's midpoint.
   Vec2 frontPoint(std::uint32_t t, std::uint32_t corner) const {
     const std::uint32_t va = tri_.vertex(3 * t + (corner + 1) % 3);
     const std::uint32_t vb = tri_.vertex(3 * t + (corner + 2) % 3);
-    const Vec2 a = tri_.point(va), b = tri_.point(vb);
+    const MetricFrame f = frameAt(
+        {0.5 * (tri_.point(va).u + tri_.point(vb).u), 0.5 * (tri_.point(va).v + tri_.point(vb).v)});
+    const Vec2 a = f.apply(tri_.point(va)), b = f.apply(tri_.point(vb));
     const Vec2 mid{0.5 * (a.u + b.u), 0.5 * (a.v + b.v)};
     const Vec2 ab = sub(b, a);
     const double half = 0.5 * length(ab);
     const Vec2 inward{-ab.v / (2 * half), ab.u / (2 * half)};
-    const Vec2 center = circumcenter(p(t, 0), p(t, 1), p(t, 2));
+    const Vec2 center = circumcenter(f.apply(p(t, 0)), f.apply(p(t, 1)), f.apply(p(t, 2)));
     const double q = std::max(length(sub(center, mid)), 1e-300);
     const double target = 0.5 * (sizes_[va] + sizes_[vb]) / kSqrt3;
     const double rho = std::min(std::max(target, half), (half * half + q * q) / (2 * q));
     const double d = rho + std::sqrt(std::max(rho * rho - half * half, 0.0));
-    return {mid.u + d * inward.u, mid.v + d * inward.v};
+    return f.invert({mid.u + d * inward.u, mid.v + d * inward.v});
   }
 
   // Size at x interpolated linearly in triangle t.
@@ -129,9 +151,30 @@ class FrontalRefiner {
            l2 * sizes_[tri_.vertex(3 * t + 2)];
   }
 
-  bool tooClose(std::uint32_t t, Vec2 x, double size) const {
-    for (int i = 0; i < 3; ++i)
-      if (length(sub(p(t, i), x)) < kMinSpacing * size) return true;
+  // The cavity of new vertex v at x: in the surface's metric at x when there is one (falling
+  // back to the plain one if that is not star-shaped).
+  bool findCavity(std::uint32_t v, std::uint32_t found, Vec2 x) {
+    using Status = Triangulation2D::InsertStatus;
+    if (metric_) {
+      const MetricFrame f = frameAt(x);
+      if (tri_.findCavity(v, found, &f) == Status::Inserted) return true;
+    }
+    return tri_.findCavity(v, found) == Status::Inserted;
+  }
+
+  // True if x would come closer than kMinSpacing target sizes to one of its future
+  // neighbours, or to a boundary edge of its cavity (a sliver against a long boundary edge).
+  bool tooClose(std::span<const Triangulation2D::CavityEdge> cavity, Vec2 x, double size) const {
+    const MetricFrame f = frameAt(x);
+    const double limit = kMinSpacing * size;
+    for (const Triangulation2D::CavityEdge& e : cavity) {
+      const Vec2 a = f.apply(sub(tri_.point(e.a), x));
+      if (length(a) < limit) return true;
+      if (e.kind == EdgeKind::Free) continue;
+      const Vec2 ab = sub(f.apply(sub(tri_.point(e.b), x)), a);
+      const double t = -(a.u * ab.u + a.v * ab.v) / (ab.u * ab.u + ab.v * ab.v);
+      if (t > 0 && t < 1 && length({a.u + t * ab.u, a.v + t * ab.v}) < limit) return true;
+    }
     return false;
   }
 
@@ -142,13 +185,13 @@ class FrontalRefiner {
     const std::uint32_t found = tri_.locate(x, t);
     if (found == kNone || !inside_[found]) return false;
     const double size = interpolatedSize(found, x);
-    if (!(size > 0) || tooClose(found, x, size)) return false;
+    if (!(size > 0)) return false;
     const std::uint32_t v = tri_.addPoint(x);
     sizes_.push_back(size);
-    if (tri_.insert(v, found) != Triangulation2D::InsertStatus::Inserted) {
-      // The point stays unused (no triangle refers to it).
-      return false;
-    }
+    // A point not inserted stays unused: no triangle refers to it.
+    if (!findCavity(v, found, x)) return false;
+    if (tooClose(tri_.cavityBoundary(), x, size)) return false;
+    tri_.commitCavity(v);
     updateAfterInsertion();
     return true;
   }
@@ -172,6 +215,7 @@ class FrontalRefiner {
   Triangulation2D& tri_;
   std::vector<std::uint8_t>& inside_;
   std::vector<double>& sizes_;
+  const SurfaceMetric* metric_;
   std::vector<State> state_;
   std::vector<std::uint32_t> stamp_;
   std::vector<HeapEntry> heap_;
@@ -180,8 +224,8 @@ class FrontalRefiner {
 }  // namespace
 
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                   std::vector<double>& sizes) {
-  FrontalRefiner(tri, inside, sizes).run();
+                   std::vector<double>& sizes, const SurfaceMetric* metric) {
+  FrontalRefiner(tri, inside, sizes, metric).run();
 }
 
 }  // namespace geomesh

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mesh/delaunay2d.h"
+#include "mesh/surface_metric.h"
 
 namespace geomesh {
 
@@ -16,7 +17,9 @@ namespace geomesh {
 // `inside` flags the triangles of the domain (classifyInside), `sizes` holds the target size
 // at each vertex; both grow with the triangulation. New points get the size interpolated
 // linearly from the triangle they fall in, so sizes extend from the boundary inwards.
+// With a metric (curved surfaces), lengths, circumradii and point placement are measured on
+// the surface rather than in the work plane.
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                   std::vector<double>& sizes);
+                   std::vector<double>& sizes, const SurfaceMetric* metric = nullptr);
 
 }  // namespace geomesh

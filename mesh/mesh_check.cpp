@@ -10,7 +10,9 @@ namespace {
 
 constexpr std::size_t kMaxProblemsPerCheck = 10;
 
-std::string nodeName(NodeIndex n) { return "node " + std::to_string(n + 1); }
+std::string nodeName(NodeIndex n) {
+  return "node " + std::to_string(n + 1);
+}
 
 std::string edgeName(NodeIndex a, NodeIndex b) {
   return "edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ")";
@@ -18,6 +20,36 @@ std::string edgeName(NodeIndex a, NodeIndex b) {
 
 std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
   return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+}
+
+// The edges of the triangles as keys (smaller node in the high half), in increasing order.
+// When the triangles' nodes span a range comparable to their number (the usual case), a
+// counting sort on the smaller node then a small sort within each bucket: linear time.
+std::vector<std::uint64_t> sortedEdges(const ElementBlock& triangles) {
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * triangles.size());
+  NodeIndex lo = ~NodeIndex{0}, hi = 0;
+  for (std::size_t e = 0; e < triangles.size(); ++e) {
+    const auto n = triangles.element(e);
+    for (int i = 0; i < 3; ++i) {
+      edges.push_back(edgeKey(n[i], n[(i + 1) % 3]));
+      lo = std::min(lo, n[i]);
+      hi = std::max(hi, n[i]);
+    }
+  }
+  if (edges.empty() || hi - lo > 4 * edges.size()) {
+    std::sort(edges.begin(), edges.end());
+    return edges;
+  }
+  std::vector<std::uint32_t> start(std::size_t{hi - lo} + 2, 0);
+  for (std::uint64_t key : edges) ++start[(key >> 32) - lo + 1];
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<std::uint64_t> sorted(edges.size());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::uint64_t key : edges) sorted[fill[(key >> 32) - lo]++] = key;
+  for (std::size_t k = 0; k + 1 < start.size(); ++k)
+    std::sort(sorted.begin() + start[k], sorted.begin() + start[k + 1]);
+  return sorted;
 }
 
 class Checker {
@@ -31,6 +63,7 @@ class Checker {
   MeshCheckReport run() {
     checkIndicesAndOwnership();
     checkDuplicates();
+    for (const auto& [tag, point] : model_.points()) checkPoint(point);
     for (const auto& [tag, curve] : model_.curves()) checkCurve(curve);
     for (const auto& [tag, surface] : model_.surfaces()) checkSurface(surface);
     checkVolumes();
@@ -84,6 +117,16 @@ class Checker {
     }
   }
 
+  void checkPoint(const ModelPoint& point) {
+    const EntityId id{0, point.tag};
+    const EntityMesh* em = mesh_.find(id);
+    if (!em) return;
+    if (em->nodes.size() != 1) return problem(id, "does not own exactly one node");
+    if (em->nodes[0] < mesh_.nodeCount() &&
+        !(distance(mesh_.node(em->nodes[0]), point.xyz) <= tolerance_))
+      problem(id, nodeName(em->nodes[0]) + " is not at the point");
+  }
+
   void checkCurve(const ModelCurve& curve) {
     const EntityId id{1, curve.tag};
     const EntityMesh* em = mesh_.find(id);
@@ -104,8 +147,8 @@ class Checker {
     for (std::size_t k = 0; k < em->nodes.size(); ++k) {
       const double d = distance(curve.geometry->point(em->parametric[k]), mesh_.node(em->nodes[k]));
       if (!(d <= tolerance_) && reported++ < kMaxProblemsPerCheck)
-        problem(id, nodeName(em->nodes[k]) + " lies off the curve (distance " +
-                        std::to_string(d) + ")");
+        problem(id, nodeName(em->nodes[k]) + " lies off the curve (distance " + std::to_string(d) +
+                        ")");
     }
   }
 
@@ -135,19 +178,14 @@ class Checker {
   }
 
   void checkConformity(EntityId id, const ModelSurface& surface, const ElementBlock& triangles) {
-    std::vector<std::uint64_t> edges;
-    edges.reserve(3 * triangles.size());
-    for (std::size_t e = 0; e < triangles.size(); ++e) {
-      const auto n = triangles.element(e);
-      for (int i = 0; i < 3; ++i) edges.push_back(edgeKey(n[i], n[(i + 1) % 3]));
-    }
-    std::sort(edges.begin(), edges.end());
+    const std::vector<std::uint64_t> edges = sortedEdges(triangles);
     const auto expected = expectedBoundary(surface);
     std::size_t reported = 0, next = 0;
     auto report = [&](std::uint64_t key, const std::string& what) {
       if (reported++ < kMaxProblemsPerCheck)
         problem(id, edgeName(static_cast<NodeIndex>(key >> 32),
-                             static_cast<NodeIndex>(key & 0xffffffffu)) + " " + what);
+                             static_cast<NodeIndex>(key & 0xffffffffu)) +
+                        " " + what);
     };
     for (std::size_t k = 0; k < edges.size();) {
       std::size_t run = k;
@@ -156,24 +194,29 @@ class Checker {
       while (next < expected.size() && expected[next].first < edges[k])
         report(expected[next++].first, "of the boundary is not a triangle edge");
       int wanted = 2;
-      if (next < expected.size() && expected[next].first == edges[k]) wanted = expected[next++].second;
+      if (next < expected.size() && expected[next].first == edges[k])
+        wanted = expected[next++].second;
       if (count != wanted)
         report(edges[k], "borders " + std::to_string(count) + " triangles instead of " +
                              std::to_string(wanted));
       k = run;
     }
-    while (next < expected.size()) report(expected[next++].first, "of the boundary is not a triangle edge");
+    while (next < expected.size())
+      report(expected[next++].first, "of the boundary is not a triangle edge");
   }
 
   // Orientation against du x dv, non-flatness, and use of foreign nodes.
   void checkTriangles(EntityId id, const ModelSurface& surface, const EntityMesh& em,
                       const ElementBlock& triangles) {
-    std::vector<std::uint8_t> allowed(mesh_.nodeCount(), 0);
-    for (NodeIndex n : em.nodes) allowed[n] = 1;
+    // allowedStamp_[n] == stamp: n belongs to the surface or its closure.
+    const std::uint32_t stamp = ++stamp_;
+    allowedStamp_.resize(mesh_.nodeCount(), 0);
     auto allowEntity = [&](EntityId e) {
       if (const EntityMesh* m = mesh_.find(e))
-        for (NodeIndex n : m->nodes) allowed[n] = 1;
+        for (NodeIndex n : m->nodes) allowedStamp_[n] = stamp;
     };
+    auto allowed = [&](NodeIndex n) { return allowedStamp_[n] == stamp; };
+    for (NodeIndex n : em.nodes) allowedStamp_[n] = stamp;
     for (const std::vector<int>& loop : surface.loops)
       for (int c : loop) {
         allowEntity({1, std::abs(c)});
@@ -190,7 +233,7 @@ class Checker {
     const SurfaceGeometry* g = surface.geometry.get();
     for (std::size_t e = 0; e < triangles.size(); ++e) {
       const auto n = triangles.element(e);
-      if (!allowed[n[0]] || !allowed[n[1]] || !allowed[n[2]]) {
+      if (!allowed(n[0]) || !allowed(n[1]) || !allowed(n[2])) {
         if (reported++ < kMaxProblemsPerCheck)
           problem(id, "triangle " + std::to_string(e + 1) + " uses a node of another entity");
         continue;
@@ -217,12 +260,12 @@ class Checker {
     std::size_t reported = 0;
     for (std::size_t k = 0; k < em.nodes.size(); ++k) {
       const Vec3 x = mesh_.node(em.nodes[k]);
-      const Vec2 uv = haveParameters ? Vec2{em.parametric[2 * k], em.parametric[2 * k + 1]}
-                                     : g.project(x);
+      const Vec2 uv =
+          haveParameters ? Vec2{em.parametric[2 * k], em.parametric[2 * k + 1]} : g.project(x);
       const double d = distance(g.point(uv), x);
       if (!(d <= tolerance_) && reported++ < kMaxProblemsPerCheck)
-        problem(id, nodeName(em.nodes[k]) + " lies off the surface (distance " +
-                        std::to_string(d) + ")");
+        problem(id, nodeName(em.nodes[k]) + " lies off the surface (distance " + std::to_string(d) +
+                        ")");
     }
   }
 
@@ -246,8 +289,8 @@ class Checker {
       std::size_t reported = 0;
       for (std::size_t e = 0; e < tets->size(); ++e) {
         const auto n = tets->element(e);
-        if (n[0] >= mesh_.nodeCount() || n[1] >= mesh_.nodeCount() ||
-            n[2] >= mesh_.nodeCount() || n[3] >= mesh_.nodeCount())
+        if (n[0] >= mesh_.nodeCount() || n[1] >= mesh_.nodeCount() || n[2] >= mesh_.nodeCount() ||
+            n[3] >= mesh_.nodeCount())
           continue;
         const Vec3 a = mesh_.node(n[0]), b = mesh_.node(n[1]), c = mesh_.node(n[2]),
                    d = mesh_.node(n[3]);
@@ -260,6 +303,8 @@ class Checker {
   const Model& model_;
   const Mesh& mesh_;
   double tolerance_ = 0;
+  std::vector<std::uint32_t> allowedStamp_;
+  std::uint32_t stamp_ = 0;
   MeshCheckReport report_;
 };
 

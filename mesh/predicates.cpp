@@ -7,8 +7,12 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Kernel::Point_2 toCgal(Vec2 p) { return {p.u, p.v}; }
-Kernel::Point_3 toCgal(Vec3 p) { return {p.x, p.y, p.z}; }
+Kernel::Point_2 toCgal(Vec2 p) {
+  return {p.u, p.v};
+}
+Kernel::Point_3 toCgal(Vec3 p) {
+  return {p.x, p.y, p.z};
+}
 
 }  // namespace
 

@@ -8,15 +8,21 @@ namespace {
 
 constexpr double kSqrt3 = 1.7320508075688772;
 
-double tetVolume6(Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return dot(cross(b - a, c - a), d - a); }
+double tetVolume6(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  return dot(cross(b - a, c - a), d - a);
+}
 
 // Columns of the inverse of the edge matrix of the regular tetrahedron with unit edges
 // (vertices (0,0,0), (1,0,0), (1/2,sqrt3/2,0), (1/2,sqrt3/6,sqrt(2/3))).
 struct Mat3 {
   Vec3 c0, c1, c2;  // columns
 };
-Vec3 times(const Mat3& m, Vec3 x) { return x.x * m.c0 + x.y * m.c1 + x.z * m.c2; }
-Mat3 times(const Mat3& a, const Mat3& b) { return {times(a, b.c0), times(a, b.c1), times(a, b.c2)}; }
+Vec3 times(const Mat3& m, Vec3 x) {
+  return x.x * m.c0 + x.y * m.c1 + x.z * m.c2;
+}
+Mat3 times(const Mat3& a, const Mat3& b) {
+  return {times(a, b.c0), times(a, b.c1), times(a, b.c2)};
+}
 
 Mat3 inverse(const Mat3& m) {
   const Vec3 r0 = cross(m.c1, m.c2), r1 = cross(m.c2, m.c0), r2 = cross(m.c0, m.c1);
@@ -30,7 +36,9 @@ Mat3 regularTetInverse() {
   return inverse(w);
 }
 
-double frobenius2(const Mat3& m) { return dot(m.c0, m.c0) + dot(m.c1, m.c1) + dot(m.c2, m.c2); }
+double frobenius2(const Mat3& m) {
+  return dot(m.c0, m.c0) + dot(m.c1, m.c1) + dot(m.c2, m.c2);
+}
 
 }  // namespace
 
@@ -56,8 +64,9 @@ double tetGamma(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   if (!(volume > 0) || !(faces > 0)) return 0;
   const double inradius = 3 * volume / faces;
   const Vec3 u = b - a, v = c - a, w = d - a;
-  const Vec3 center = (dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u) + dot(w, w) * cross(u, v)) /
-                      (2 * dot(u, cross(v, w)));
+  const Vec3 center =
+      (dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u) + dot(w, w) * cross(u, v)) /
+      (2 * dot(u, cross(v, w)));
   return 3 * inradius / norm(center);
 }
 

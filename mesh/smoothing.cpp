@@ -58,10 +58,44 @@ void smoothVertex(Triangulation2D& tri, const Incidence& inc, std::uint32_t v) {
   tri.movePoint(v, target);
 }
 
+// True if the free edge of `corner` is not locally Delaunay in the metric at its midpoint.
+bool shouldFlipInMetric(const Triangulation2D& tri, std::uint32_t corner,
+                        const SurfaceMetric& metric) {
+  const std::uint32_t across = tri.neighbour(corner);
+  if (across == kNone || tri.kind(corner) != EdgeKind::Free) return false;
+  const std::uint32_t t = corner / 3;
+  const Vec2 a = tri.point(tri.vertex(3 * t)), b = tri.point(tri.vertex(3 * t + 1)),
+             c = tri.point(tri.vertex(3 * t + 2)), d = tri.point(tri.vertex(across));
+  const Vec2 u = tri.point(tri.vertex(t * 3 + (corner + 1) % 3));
+  const Vec2 w = tri.point(tri.vertex(t * 3 + (corner + 2) % 3));
+  const MetricFrame f(metric.at({0.5 * (u.u + w.u), 0.5 * (u.v + w.v)}));
+  // The flip must also keep both new triangles positive in the plane.
+  const Vec2 x = tri.point(tri.vertex(corner));
+  if (orient2d(x, u, d) <= 0 || orient2d(d, w, x) <= 0) return false;
+  return incircle(f.apply(a), f.apply(b), f.apply(c), f.apply(d)) > 0;
+}
+
+// Lawson flips in a metric that varies from edge to edge: no global Delaunay triangulation
+// exists to converge to, so the number of flips is bounded.
+void restoreMetricDelaunay(Triangulation2D& tri, std::vector<std::uint32_t> stack,
+                           const SurfaceMetric& metric) {
+  std::size_t budget = 4 * stack.size();
+  while (!stack.empty() && budget > 0) {
+    const std::uint32_t c = stack.back();
+    stack.pop_back();
+    if (!shouldFlipInMetric(tri, c, metric)) continue;
+    const std::uint32_t c2 = tri.neighbour(c);
+    tri.flip(c);
+    --budget;
+    const std::uint32_t t = c / 3, t2 = c2 / 3;
+    stack.insert(stack.end(), {3 * t, 3 * t + 2, 3 * t2, 3 * t2 + 2});
+  }
+}
+
 }  // namespace
 
 void smoothTriangulation(Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-                         std::uint32_t firstMovable, int passes) {
+                         std::uint32_t firstMovable, int passes, const SurfaceMetric* metric) {
   const std::uint32_t vertexCount = static_cast<std::uint32_t>(tri.pointCount());
   for (int pass = 0; pass < passes; ++pass) {
     const Incidence inc = buildIncidence(tri, inside);
@@ -70,7 +104,10 @@ void smoothTriangulation(Triangulation2D& tri, const std::vector<std::uint8_t>& 
     corners.reserve(3 * tri.triangleCount());
     for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
       if (inside[t]) corners.insert(corners.end(), {3 * t, 3 * t + 1, 3 * t + 2});
-    tri.restoreDelaunay(std::move(corners));
+    if (metric)
+      restoreMetricDelaunay(tri, std::move(corners), *metric);
+    else
+      tri.restoreDelaunay(std::move(corners));
   }
 }
 

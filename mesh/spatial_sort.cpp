@@ -13,7 +13,8 @@ namespace geomesh {
 std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Traits =
-      CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::Pointer_property_map<Kernel::Point_2>::type>;
+      CGAL::Spatial_sort_traits_adapter_2<Kernel,
+                                          CGAL::Pointer_property_map<Kernel::Point_2>::type>;
   std::vector<Kernel::Point_2> cgalPoints;
   cgalPoints.reserve(points.size());
   for (Vec2 p : points) cgalPoints.emplace_back(p.u, p.v);

@@ -9,38 +9,10 @@
 #include "mesh/frontal_refinement.h"
 #include "mesh/generate.h"
 #include "mesh/smoothing.h"
+#include "mesh/surface_metric.h"
 
 namespace geomesh {
 namespace {
-
-// An affine map from the parameter plane to a "work" plane whose lengths are those on the
-// surface at a reference point (everywhere for a plane). It keeps orientation, so triangles
-// counter-clockwise in the work plane are counter-clockwise in the parametrization.
-class WorkFrame {
- public:
-  WorkFrame(const SurfaceGeometry& g, Vec2 origin) : origin_(origin) {
-    const SurfaceDerivatives d = g.firstDerivatives(origin);
-    const double a11 = norm(d.du);
-    if (!(a11 > 0)) return;
-    const double a12 = dot(d.dv, d.du) / a11;
-    const double a22 = norm(d.dv - (a12 / a11) * d.du);
-    if (!(a22 > 0)) return;
-    a11_ = a11, a12_ = a12, a22_ = a22;
-  }
-  Vec2 toWork(Vec2 uv) const {
-    const double du = uv.u - origin_.u, dv = uv.v - origin_.v;
-    return {a11_ * du + a12_ * dv, a22_ * dv};
-  }
-  Vec2 toParam(Vec2 w) const {
-    const double dv = w.v / a22_;
-    const double du = (w.u - a12_ * dv) / a11_;
-    return {origin_.u + du, origin_.v + dv};
-  }
-
- private:
-  Vec2 origin_;
-  double a11_ = 1, a12_ = 0, a22_ = 1;
-};
 
 // The nodes and constrained segments a surface's triangulation starts from, numbered locally.
 struct SurfaceInput {
@@ -110,6 +82,35 @@ Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Ve
   return tri;
 }
 
+// Target sizes at the triangulation's vertices. Extended from the boundary: the mean length
+// of the boundary segments at each boundary node (what the curve meshes actually realised,
+// so that the interior matches them), or the node's own size for an isolated embedded
+// point. Not extended: sizeMax everywhere.
+std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh& mesh,
+                                  const std::vector<double>& nodeSizes) {
+  std::vector<double> sizes(Triangulation2D::kFirstVertex, 0.0);
+  if (!rules.extendFromBoundary) {
+    sizes.resize(sizes.size() + in.nodes.size(), rules.finish(rules.sizeMax));
+    return sizes;
+  }
+  std::vector<double> total(in.nodes.size(), 0.0);
+  std::vector<int> count(in.nodes.size(), 0);
+  for (const ConstrainedSegment& s : in.segments) {
+    const double length = distance(mesh.node(in.nodes[s.a]), mesh.node(in.nodes[s.b]));
+    total[s.a] += length, total[s.b] += length;
+    ++count[s.a], ++count[s.b];
+  }
+  const double fallback = rules.finish(rules.defaultSize);
+  for (std::size_t k = 0; k < in.nodes.size(); ++k) {
+    const NodeIndex n = in.nodes[k];
+    if (count[k] > 0)
+      sizes.push_back(total[k] / count[k]);
+    else
+      sizes.push_back(n < nodeSizes.size() && nodeSizes[n] > 0 ? nodeSizes[n] : fallback);
+  }
+  return sizes;
+}
+
 // Copies the inside triangles and their new vertices into the surface's EntityMesh.
 void storeMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
                const SurfaceInput& in, const std::vector<double>& sizes, const WorkFrame& frame,
@@ -159,14 +160,12 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   if (std::find(inside.begin(), inside.end(), 1) == inside.end())
     throw MeshError(id, "the boundary encloses no area");
 
-  const double fallback = rules.finish(rules.defaultSize);
-  std::vector<double> sizes(Triangulation2D::kFirstVertex, 0.0);
-  for (NodeIndex n : in.nodes)
-    sizes.push_back(n < nodeSizes.size() && nodeSizes[n] > 0 ? nodeSizes[n] : fallback);
-  refineFrontal(tri, inside, sizes);
+  std::vector<double> sizes = boundarySizes(in, rules, mesh, nodeSizes);
+  const SurfaceMetric metric(g, frame);
+  refineFrontal(tri, inside, sizes, g.isPlane() ? nullptr : &metric);
   smoothTriangulation(tri, inside,
                       Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size()),
-                      smoothingPasses);
+                      smoothingPasses, g.isPlane() ? nullptr : &metric);
 
   EntityMesh& em = mesh.entity(id);
   em.nodes.clear();

@@ -13,6 +13,7 @@ packages=(
   libtet1.5-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libgtest-dev
+  clang libclang-rt-14-dev
 )
 
 missing_packages() {

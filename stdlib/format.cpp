@@ -13,6 +13,7 @@ template <class T>
 std::string printOne(const std::string& spec, T value) {
   int size = std::snprintf(nullptr, 0, spec.c_str(), value);
   if (size < 0) throw std::invalid_argument("bad format '" + spec + "'");
+  if (size > 1'000'000) throw std::invalid_argument("format '" + spec + "' gives too long a text");
   std::vector<char> buffer(static_cast<std::size_t>(size) + 1);
   std::snprintf(buffer.data(), buffer.size(), spec.c_str(), value);
   return std::string(buffer.data(), static_cast<std::size_t>(size));

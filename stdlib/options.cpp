@@ -1,6 +1,7 @@
 #include "stdlib/options.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "stdlib/edit_distance.h"
@@ -84,6 +85,25 @@ void OptionRegistry::setString(std::string_view name, std::string value) {
 
 std::vector<std::string> OptionRegistry::suggestions(std::string_view name) const {
   return closestNames(name, names_);
+}
+
+std::string optionListingLine(const OptionRegistry::Option& option) {
+  std::string line = option.name + " = ";
+  char buffer[64];
+  if (option.type == OptionType::String) {
+    line += "\"" + option.text + "\"";
+  } else if (option.type == OptionType::Color) {
+    const auto packed = static_cast<long long>(option.number);
+    std::snprintf(buffer, sizeof buffer, "{%lld,%lld,%lld}", (packed >> 16) & 255,
+                  (packed >> 8) & 255, packed & 255);
+    line += buffer;
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.16g", option.number);
+    line += buffer;
+  }
+  line += "; // " + option.help;
+  for (const auto& alias : option.aliases) line += " (old name: " + alias + ")";
+  return line;
 }
 
 void OptionRegistry::reset() {

@@ -54,4 +54,8 @@ class OptionRegistry {
   std::vector<std::string> names_;
 };
 
+// One line of the option listing (-help-options), in script syntax:
+//   Mesh.MeshSizeMin = 0; // lower bound on the element size (old name: ...)
+std::string optionListingLine(const OptionRegistry::Option& option);
+
 }  // namespace geomesh

@@ -13,7 +13,7 @@ std::vector<double> expandRange(double first, double last, std::optional<double>
   if (span < -1e-10) return values;
   // A relative tolerance absorbs rounding: 0:1:0.1 ends at 1, not 0.9.
   const auto count = static_cast<long long>(std::floor(span + 1e-10 * std::max(1.0, span))) + 1;
-  if (count > 100'000'000) throw std::invalid_argument("range has too many values");
+  if (count > 10'000'000) throw std::invalid_argument("range has too many values");
   values.reserve(static_cast<std::size_t>(count));
   for (long long i = 0; i < count; ++i) values.push_back(first + static_cast<double>(i) * delta);
   return values;

@@ -1,9 +1,11 @@
 #include "kernel/geo/geo_factory.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
+#include "kernel/geo/circle_arc_geometry.h"
 #include "kernel/geo/line_geometry.h"
 #include "kernel/geometry_error.h"
 #include "kernel/plane_geometry.h"
@@ -57,7 +59,10 @@ std::vector<int> reversedLoop(std::vector<int> loop) {
 
 void GeoFactory::addPoint(int tag, Vec3 xyz, double meshSize) {
   requireNew(points_, tag, "Point");
+  if (!std::isfinite(xyz.x) || !std::isfinite(xyz.y) || !std::isfinite(xyz.z))
+    fail("Point ", tag, ": its coordinates are not finite numbers");
   points_[tag] = ModelPoint{tag, xyz, meshSize};
+  bounds_.include(xyz);
 }
 
 void GeoFactory::addLine(int tag, int startPoint, int endPoint) {
@@ -69,6 +74,24 @@ void GeoFactory::addLine(int tag, int startPoint, int endPoint) {
   if (distance(points_.at(startPoint).xyz, points_.at(endPoint).xyz) <= absoluteTolerance())
     fail("Line ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
   curves_[tag] = Curve{tag, startPoint, endPoint};
+}
+
+void GeoFactory::addCircleArc(int tag, int startPoint, int centerPoint, int endPoint) {
+  requireNew(curves_, tag, "Curve");
+  for (int p : {startPoint, centerPoint, endPoint})
+    if (!hasPoint(p)) fail("Circle ", tag, ": point ", p, " is not defined");
+  const Vec3 start = points_.at(startPoint).xyz, center = points_.at(centerPoint).xyz;
+  const Vec3 end = points_.at(endPoint).xyz;
+  const double r1 = distance(start, center), r2 = distance(end, center);
+  const double tolerance = absoluteTolerance();
+  if (r1 <= tolerance || r2 <= tolerance)
+    fail("Circle ", tag, ": its center, point ", centerPoint, ", is one of its ends");
+  if (distance(start, end) <= tolerance)
+    fail("Circle ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
+  if (std::abs(r1 - r2) > 0.1 * std::max(r1, r2))
+    fail("Circle ", tag, ": points ", startPoint, " and ", endPoint,
+         " are not on one circle around point ", centerPoint, " (radii ", r1, " and ", r2, ")");
+  curves_[tag] = Curve{tag, startPoint, endPoint, Curve::Kind::CircleArc, centerPoint};
 }
 
 void GeoFactory::addCurveLoop(int tag, std::vector<int> curves) {
@@ -149,9 +172,7 @@ void GeoFactory::clear() {
 }
 
 double GeoFactory::absoluteTolerance() const {
-  BoundingBox box;
-  for (const auto& [tag, p] : points_) box.include(p.xyz);
-  const double size = box.empty() ? 0.0 : distance(box.min, box.max);
+  const double size = bounds_.empty() ? 0.0 : distance(bounds_.min, bounds_.max);
   return tolerance_ * (size > 0 ? size : 1.0);
 }
 
@@ -160,33 +181,67 @@ std::array<int, 2> GeoFactory::curveEnds(int signedCurve) const {
   return signedCurve > 0 ? std::array{c.start, c.end} : std::array{c.end, c.start};
 }
 
+namespace {
+
+// The axis an arc turns about: normal to its ends' radii, or for a half circle (where they are
+// opposite), the coordinate axis most normal to them, z first.
+Vec3 arcAxis(Vec3 center, Vec3 start, Vec3 end) {
+  const Vec3 v1 = start - center, v2 = end - center;
+  const Vec3 n = cross(v1, v2);
+  if (norm(n) > 1e-10 * norm(v1) * norm(v2)) return normalized(n);
+  const Vec3 e1 = normalized(v1);
+  Vec3 best{0, 0, 1};
+  for (Vec3 axis : {Vec3{0, 1, 0}, Vec3{1, 0, 0}})
+    if (std::abs(dot(axis, e1)) < std::abs(dot(best, e1)) - 1e-12) best = axis;
+  return normalized(best - dot(best, e1) * e1);
+}
+
+}  // namespace
+
+std::shared_ptr<const CurveGeometry> GeoFactory::curveGeometry(const Curve& c) const {
+  const Vec3 start = points_.at(c.start).xyz, end = points_.at(c.end).xyz;
+  if (c.kind == Curve::Kind::Line) return std::make_shared<LineGeometry>(start, end);
+  const Vec3 center = points_.at(c.center).xyz;
+  return std::make_shared<CircleArcGeometry>(center, start, end, arcAxis(center, start, end));
+}
+
+std::vector<Vec3> GeoFactory::loopSamples(int signedLoop) const {
+  constexpr int kArcSamples = 16;
+  std::vector<Vec3> samples;
+  for (int c : loopCurves(signedLoop)) {
+    const Curve& curve = curves_.at(std::abs(c));
+    samples.push_back(points_.at(curveEnds(c)[0]).xyz);
+    if (curve.kind == Curve::Kind::Line) continue;
+    const auto geometry = curveGeometry(curve);
+    for (int i = 1; i < kArcSamples; ++i) {
+      const double t = static_cast<double>(i) / kArcSamples;
+      samples.push_back(geometry->point(c > 0 ? t : 1 - t));
+    }
+  }
+  return samples;
+}
+
 std::vector<int> GeoFactory::loopCurves(int signedLoop) const {
   const std::vector<int>& loop = curveLoops_.at(std::abs(signedLoop));
   return signedLoop > 0 ? loop : reversedLoop(loop);
 }
 
 // The plane is fitted to the outer loop (its normal follows the loop's orientation, so the
-// loop runs counter-clockwise in the plane's parameters); every loop must lie on it.
+// loop runs counter-clockwise in the plane's parameters); every loop must lie on it. Arcs are
+// sampled, so that both the fit and the check see their shape.
 std::shared_ptr<const SurfaceGeometry> GeoFactory::fitPlaneSurface(
     int tag, const std::vector<int>& loops) const {
-  auto loopPoints = [this](int loop) {
-    std::vector<Vec3> polygon;
-    for (int c : loopCurves(loop)) polygon.push_back(points_.at(curveEnds(c)[0]).xyz);
-    return polygon;
-  };
-  const PlaneFit fit = fitPlane(loopPoints(loops.front()));
+  const PlaneFit fit = fitPlane(loopSamples(loops.front()));
   if (norm(fit.normal) == 0)
     fail("Plane surface ", tag, ": curve loop ", std::abs(loops.front()), " encloses no area");
   auto plane = std::make_shared<PlaneGeometry>(fit.origin, fit.normal);
   const double tolerance = absoluteTolerance();
   for (int loop : loops)
-    for (int c : loopCurves(loop)) {
-      const int p = curveEnds(c)[0];
-      const Vec3 xyz = points_.at(p).xyz;
+    for (Vec3 xyz : loopSamples(loop)) {
       const double offset = std::abs(dot(xyz - fit.origin, fit.normal));
       if (offset > tolerance)
-        fail("Plane surface ", tag, " is not plane: point ", p, " lies ", offset,
-             " away from the plane of curve loop ", std::abs(loops.front()));
+        fail("Plane surface ", tag, " is not plane: curve loop ", std::abs(loop),
+             " passes ", offset, " away from the plane of curve loop ", std::abs(loops.front()));
       plane->include(xyz);
     }
   return plane;
@@ -208,13 +263,14 @@ void GeoFactory::checkShellClosed(int tag, const std::vector<int>& surfaces) con
 void GeoFactory::synchronize(Model& model) const {
   model.clear();
   for (const auto& [tag, p] : points_) model.addPoint(p);
-  for (const auto& [tag, c] : curves_) {
-    auto line = std::make_shared<LineGeometry>(points_.at(c.start).xyz, points_.at(c.end).xyz);
-    model.addCurve(ModelCurve{tag, c.start, c.end, std::move(line)});
-  }
+  for (const auto& [tag, c] : curves_)
+    model.addCurve(ModelCurve{tag, c.start, c.end, curveGeometry(c)});
   for (const auto& [tag, s] : surfaces_) {
+    // Holes run against the direction they were given in, as the built-in kernel of Gmsh
+    // lists them (whatever that direction was).
     ModelSurface surface{tag, {}, s.geometry, {}, {}};
-    for (int loop : s.loops) surface.loops.push_back(loopCurves(loop));
+    for (std::size_t i = 0; i < s.loops.size(); ++i)
+      surface.loops.push_back(loopCurves(i == 0 ? s.loops[i] : -s.loops[i]));
     model.addSurface(std::move(surface));
   }
   for (const auto& [tag, v] : volumes_) {

@@ -13,10 +13,15 @@ namespace geomesh {
 // The built-in geometry kernel (the default factory of .geo scripts). Entities are defined
 // one call at a time, as a script states them, and checked immediately (an undefined point or
 // curve throws GeometryError naming its tag); synchronize() builds the Model from them.
+// As in Gmsh, a tag cannot be redefined: reusing one throws ("Point 1 already exists").
 class GeoFactory {
  public:
   void addPoint(int tag, Vec3 xyz, double meshSize);
   void addLine(int tag, int startPoint, int endPoint);
+  // An arc of circle around `centerPoint`, of angle at most pi (Circle(tag) = {start, center,
+  // end}). The two ends must be at about the same distance from the center (within 10%, as the
+  // built-in kernel allows; the radius then varies along the arc so that it joins both).
+  void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint);
   // A closed chain of curves; signed tags (negative: reversed). Curves given in any order
   // and orientation are chained as the built-in kernel does; a loop that does not close
   // throws, naming the gap.
@@ -26,7 +31,8 @@ class GeoFactory {
   void addSurfaceLoop(int tag, std::vector<int> surfaces);
   void addVolume(int tag, std::vector<int> surfaceLoops);
   // Creates the group or, if (dim, tag) exists, appends to it. An empty name keeps the old one.
-  void addPhysicalGroup(int dim, int tag, const std::string& name, const std::vector<int>& entities);
+  void addPhysicalGroup(int dim, int tag, const std::string& name,
+                        const std::vector<int>& entities);
 
   bool hasPoint(int tag) const;
   Vec3 pointCoordinates(int tag) const;  // throws if undefined
@@ -48,7 +54,8 @@ class GeoFactory {
   struct Curve {
     int tag;
     int start, end;
-    enum class Kind { Line } kind = Kind::Line;
+    enum class Kind { Line, CircleArc } kind = Kind::Line;
+    int center = 0;  // circle arcs
   };
   struct Surface {
     int tag;
@@ -67,9 +74,13 @@ class GeoFactory {
   std::map<int, Volume> volumes_;
   std::map<EntityId, PhysicalGroup> physicals_;
   double tolerance_ = 1e-8;
+  BoundingBox bounds_;  // of the points, kept as they are added
 
   double absoluteTolerance() const;
   std::array<int, 2> curveEnds(int signedCurve) const;
+  std::shared_ptr<const CurveGeometry> curveGeometry(const Curve& c) const;
+  // Points along a loop, in its direction: each curve's start, and inner points of arcs.
+  std::vector<Vec3> loopSamples(int signedLoop) const;
   std::vector<int> loopCurves(int signedLoop) const;
   std::shared_ptr<const SurfaceGeometry> fitPlaneSurface(int tag,
                                                        const std::vector<int>& loops) const;

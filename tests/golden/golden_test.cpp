@@ -1,5 +1,6 @@
-// Golden script tests: each tests/golden/scripts/NAME.geo (and each tutorials/NAME.geo with a
-// tests/golden/tutorials/NAME.expected) runs through the geomesh command with the arguments of
+// Golden script tests: each tests/golden/scripts/NAME.geo (each tutorials/NAME.geo with a
+// tests/golden/tutorials/NAME.expected, and each malformed script of tests/golden/bad_input)
+// runs through the geomesh command with the arguments of
 // NAME.expected; the mesh file it writes is read back and summarized, and the summary is
 // compared with NAME.expected, with tolerances.
 #include <gtest/gtest.h>
@@ -25,6 +26,8 @@ struct GoldenFiles {
   fs::path expected;
 };
 
+void PrintTo(const GoldenFiles& f, std::ostream* os) { *os << f.name; }
+
 std::vector<GoldenFiles> goldenCases() {
   const fs::path source(GEOMESH_SOURCE_DIR);
   const fs::path golden = source / "tests" / "golden";
@@ -38,6 +41,7 @@ std::vector<GoldenFiles> goldenCases() {
   };
   collect(golden / "scripts", golden / "scripts", "");
   collect(golden / "tutorials", source / "tutorials", "tutorial_");
+  collect(golden / "bad_input", golden / "bad_input", "bad_");
   std::sort(cases.begin(), cases.end(),
             [](const GoldenFiles& a, const GoldenFiles& b) { return a.name < b.name; });
   return cases;
@@ -100,7 +104,8 @@ void expectSummary(const GoldenCase& c, const fs::path& mshPath) {
     bool found = false;
     for (const MeshSummary::Group& g : s.physicalGroups) {
       std::ostringstream os;
-      os << g.dim << ' ' << g.tag << ' ' << g.name;
+      os << g.dim << ' ' << g.tag;
+      if (!g.name.empty()) os << ' ' << g.name;
       found = found || os.str() == want;
     }
     EXPECT_TRUE(found) << "missing physical group '" << want << "'";

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "kernel/geometry_error.h"
 #include "kernel/plane_geometry.h"
 
@@ -137,6 +139,8 @@ TEST(GeoFactory, ErrorsNameTheTags) {
             "Plane surface 1: curve loop 4 is not defined");
   EXPECT_EQ(errorOf([&] { geo.addVolume(1, {4}); }), "Volume 1: surface loop 4 is not defined");
   EXPECT_EQ(errorOf([&] { geo.pointCoordinates(42); }), "Point 42 is not defined");
+  EXPECT_EQ(errorOf([&] { geo.addPoint(8, {0, std::nan(""), 0}, 1); }),
+            "Point 8: its coordinates are not finite numbers");
 }
 
 TEST(GeoFactory, NonPlanarLoopIsRejected) {
@@ -182,7 +186,8 @@ TEST(GeoFactory, SurfaceWithHoleKeepsBothLoops) {
   Model model;
   geo.synchronize(model);
   EXPECT_EQ(model.surface(1)->loops.size(), 2u);
-  EXPECT_EQ(model.boundary({2, 1}), (std::vector<int>{1, 2, 3, 4, 5, 6, 7}));
+  // Holes are listed reversed, as Gmsh lists them.
+  EXPECT_EQ(model.boundary({2, 1}), (std::vector<int>{1, 2, 3, 4, -7, -6, -5}));
   const ParamBox b = model.surface(1)->geometry->bounds();
   EXPECT_NEAR(b.u.max - b.u.min, 1, 1e-15);
   EXPECT_NEAR(b.v.max - b.v.min, 1, 1e-15);
@@ -207,6 +212,58 @@ TEST(GeoFactory, MaxTagAndPhysicalGroups) {
   geo.clear();
   EXPECT_EQ(geo.maxTag(0), 0);
   EXPECT_FALSE(geo.hasPoint(1));
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+// A disk from four quarter arcs, and a half disk closed by its diameter.
+TEST(GeoFactory, CircleArcsBoundPlaneSurfaces) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 0.1);
+  geo.addPoint(2, {1, 0, 0}, 0.1);
+  geo.addPoint(3, {0, 1, 0}, 0.1);
+  geo.addPoint(4, {-1, 0, 0}, 0.1);
+  geo.addPoint(5, {0, -1, 0}, 0.1);
+  geo.addCircleArc(1, 2, 1, 3);
+  geo.addCircleArc(2, 3, 1, 4);
+  geo.addCircleArc(3, 4, 1, 5);
+  geo.addCircleArc(4, 5, 1, 2);
+  geo.addCircleArc(5, 2, 1, 4);  // a half circle: turns about +z, through (0, 1, 0)
+  geo.addLine(6, 4, 2);
+  geo.addCurveLoop(1, {1, 2, 3, 4});
+  geo.addPlaneSurface(1, {1});
+  geo.addCurveLoop(2, {5, 6});
+  geo.addPlaneSurface(2, {2});
+  Model model;
+  geo.synchronize(model);
+  const Vec3 top = model.curve(5)->geometry->point(0.5);
+  EXPECT_NEAR(top.x, 0, 1e-15);
+  EXPECT_NEAR(top.y, 1, 1e-15);
+  EXPECT_EQ(model.curve(1)->geometry->range().max, 1);
+  const ParamBox b = model.surface(1)->geometry->bounds();
+  EXPECT_NEAR(b.u.max - b.u.min, 2, 1e-12);
+  EXPECT_NEAR(b.v.max - b.v.min, 2, 1e-12);
+  const auto d = model.surface(2)->geometry->firstDerivatives({0, 0});
+  EXPECT_NEAR(cross(d.du, d.dv).z, 1, 1e-15);  // the loop runs counter-clockwise about +z
+  const BoundingBox box = model.boundingBox({1, 1});
+  EXPECT_NEAR(box.max.x, 1, 1e-15);
+  EXPECT_NEAR(box.max.y, 1, 1e-15);
+}
+
+TEST(GeoFactory, CircleArcErrors) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 0.1);
+  geo.addPoint(2, {1, 0, 0}, 0.1);
+  geo.addPoint(3, {0, 2, 0}, 0.1);
+  EXPECT_EQ(errorOf([&] { geo.addCircleArc(1, 2, 1, 9); }), "Circle 1: point 9 is not defined");
+  EXPECT_EQ(errorOf([&] { geo.addCircleArc(1, 2, 1, 3); }),
+            "Circle 1: points 2 and 3 are not on one circle around point 1 (radii 1 and 2)");
+  EXPECT_EQ(errorOf([&] { geo.addCircleArc(1, 2, 2, 3); }),
+            "Circle 1: its center, point 2, is one of its ends");
 }
 
 }  // namespace

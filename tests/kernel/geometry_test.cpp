@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "kernel/geo/circle_arc_geometry.h"
 #include "kernel/geo/line_geometry.h"
 #include "kernel/plane_geometry.h"
 
@@ -83,6 +84,37 @@ TEST(PlaneGeometry, ProjectionInvertsPointAndDropsNormalOffset) {
   plane.include(plane.point({1, 1}));
   EXPECT_NEAR(plane.bounds().u.min, 0.3, 1e-14);
   EXPECT_NEAR(plane.bounds().v.max, 1, 1e-14);
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(CircleArcGeometry, QuarterArcMatchesTheCircle) {
+  const CircleArcGeometry arc({1, 1, 0}, {2, 1, 0}, {1, 2, 0}, {0, 0, 1});
+  EXPECT_NEAR(arc.angle(), std::acos(-1.0) / 2, 1e-15);
+  const Vec3 mid = arc.point(0.5);
+  EXPECT_NEAR(mid.x, 1 + std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(mid.y, 1 + std::sqrt(0.5), 1e-15);
+  const Vec3 end = arc.point(1);
+  EXPECT_NEAR(end.x, 1, 1e-15);
+  EXPECT_NEAR(end.y, 2, 1e-15);
+}
+
+TEST(CircleArcGeometry, DerivativesMatchFiniteDifferences) {
+  // Ends at different radii: the radius varies along the arc.
+  const CircleArcGeometry arc({0, 0, 1}, {1, 0, 1}, {0, 0, 2.05}, {0, -1, 0});
+  const double h = 1e-6;
+  for (double t : {0.0 + h, 0.3, 0.77, 1.0 - h}) {
+    const Vec3 fd = (arc.point(t + h) - arc.point(t - h)) / (2 * h);
+    const Vec3 d = arc.firstDerivative(t);
+    EXPECT_NEAR(norm(d - fd), 0, 1e-7);
+    const Vec3 fd2 = (arc.firstDerivative(t + h) - arc.firstDerivative(t - h)) / (2 * h);
+    EXPECT_NEAR(norm(arc.secondDerivative(t) - fd2), 0, 1e-6);
+  }
+  EXPECT_NEAR(norm(arc.point(1) - Vec3{0, 0, 2.05}), 0, 1e-15);
 }
 
 }  // namespace

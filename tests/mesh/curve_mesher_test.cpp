@@ -41,10 +41,10 @@ TEST(CurveMesher, UniformSizeGivesEqualSegments) {
 
 TEST(CurveMesher, SegmentCountRoundsUpWithOnePercentSlack) {
   EXPECT_EQ(segmentsOfUnitLine(0.1, 0.1), 10);
-  EXPECT_EQ(segmentsOfUnitLine(0.3, 0.3), 4);    // 3.33
-  EXPECT_EQ(segmentsOfUnitLine(0.4, 0.4), 3);    // 2.5
-  EXPECT_EQ(segmentsOfUnitLine(0.6, 0.6), 2);    // 1.67
-  EXPECT_EQ(segmentsOfUnitLine(0.99, 0.99), 2);  // 1.0101
+  EXPECT_EQ(segmentsOfUnitLine(0.3, 0.3), 4);      // 3.33
+  EXPECT_EQ(segmentsOfUnitLine(0.4, 0.4), 3);      // 2.5
+  EXPECT_EQ(segmentsOfUnitLine(0.6, 0.6), 2);      // 1.67
+  EXPECT_EQ(segmentsOfUnitLine(0.99, 0.99), 2);    // 1.0101
   EXPECT_EQ(segmentsOfUnitLine(0.995, 0.995), 1);  // 1.005
   EXPECT_EQ(segmentsOfUnitLine(5, 5), 1);
 }
@@ -84,6 +84,14 @@ TEST(CurveMesher, SizesAreClampedThenScaled) {
   EXPECT_EQ(segmentsOfUnitLine(0.01, 0.1, clampedGrading), 17);
 }
 
+TEST(CurveMesher, IgnoringPointSizesLeavesOnlySizeMax) {
+  MeshOptions ignore;
+  ignore.sizeFromPoints = false;
+  EXPECT_EQ(segmentsOfUnitLine(0.1, 0.1, ignore), 1);
+  ignore.sizeMax = 0.25;
+  EXPECT_EQ(segmentsOfUnitLine(0.1, 0.1, ignore), 4);
+}
+
 TEST(CurveMesher, PointsWithoutSizeUseATenthOfTheModelDiagonal) {
   PolygonModelBuilder b;
   b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0);  // diagonal sqrt(2): size 0.1414
@@ -96,16 +104,48 @@ TEST(CurveMesher, PointsWithoutSizeUseATenthOfTheModelDiagonal) {
   EXPECT_EQ(mesh.find({1, 1})->elementCount(), 4u);
 }
 
-TEST(CurveMesher, ClosedCurveGetsAtLeastThreeSegments) {
+TEST(CurveMesher, CurveWithOneSizedEndStaysCoarse) {
+  // The unsized end asks for an unbounded size: the size grows at once from the sized end.
+  EXPECT_EQ(segmentsOfUnitLine(0.1, 0), 1);
+  EXPECT_EQ(segmentsOfUnitLine(0, 0.01), 1);
+  MeshOptions bounded;
+  bounded.sizeMax = 0.2;
+  EXPECT_EQ(segmentsOfUnitLine(0.1, 0, bounded), 5);
+  // A square with one sized corner: its two sides are coarse, the others use the default.
+  PolygonModelBuilder b;
+  const std::vector<int> corners{b.point(0, 0, 0.05), b.point(1, 0), b.point(1, 1), b.point(0, 1)};
+  for (int k = 0; k < 4; ++k) b.line(corners[k], corners[(k + 1) % 4]);
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 1, mesh, log);
+  const std::size_t expected[4] = {1, 8, 8, 1};
+  for (int c = 1; c <= 4; ++c) EXPECT_EQ(mesh.find({1, c})->elementCount(), expected[c - 1]);
+}
+
+TEST(CurveMesher, ClosedCircleGetsAtLeastSixSegments) {
   PolygonModelBuilder b;
   b.circle({0, 0}, 1, 100);
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, {}, 1, mesh, log);
   const EntityMesh* em = mesh.find({1, 1});
-  EXPECT_EQ(em->elementCount(), 3u);
+  EXPECT_EQ(em->elementCount(), 6u);
   const ElementBlock* lines = em->findBlock(ElementType::Line2);
   EXPECT_EQ(lines->nodes.front(), lines->nodes.back());
+}
+
+TEST(CurveMesher, ArcsGetSixSegmentsPerFullTurnAtLeast) {
+  // Arcs of 20, 40, ..., 160 degrees with a huge size: ceil(6 angle / 360), with 1% slack.
+  PolygonModelBuilder b;
+  const double degree = testing::CircleGeometry::kPi / 180;
+  for (int k = 1; k <= 8; ++k) b.arc({0, 0}, 1, 0, 20 * k * degree, 100);
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 1, mesh, log);
+  const std::size_t expected[8] = {1, 1, 1, 2, 2, 2, 3, 3};
+  for (int k = 1; k <= 8; ++k) EXPECT_EQ(mesh.find({1, k})->elementCount(), expected[k - 1]) << k;
+  // A straight segment keeps one.
+  EXPECT_EQ(segmentsOfUnitLine(100, 100), 1);
 }
 
 TEST(CurveMesher, CircleNodesLieOnTheCurveAtEqualArcLength) {

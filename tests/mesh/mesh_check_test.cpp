@@ -83,6 +83,13 @@ TEST(MeshCheck, NodeOffTheSurfaceIsReported) {
   EXPECT_TRUE(f.reports(r, {2, 1}, "lies off the surface")) << r.summary();
 }
 
+TEST(MeshCheck, MovedPointNodeIsReported) {
+  Fixture f;
+  f.mesh.setNode(f.mesh.find({0, 3})->nodes[0], {1, 1, 1e-3});
+  const MeshCheckReport r = checkMesh(f.builder.model, f.mesh);
+  EXPECT_TRUE(f.reports(r, {0, 3}, "is not at the point")) << r.summary();
+}
+
 TEST(MeshCheck, BrokenCurveChainIsReported) {
   Fixture f;
   ElementBlock& lines = f.mesh.entity({1, 2}).block(ElementType::Line2);

@@ -3,6 +3,7 @@
 // Small models for the mesher tests, built directly (no script, no geometry kernel): straight
 // segments and the plane z = 0.
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -24,11 +25,13 @@ class SegmentGeometry final : public CurveGeometry {
   Vec3 a_, b_;
 };
 
-// A full circle of the given radius around `center` in the plane z = center.z, from angle 0.
+// A circular arc of the given radius around `center` in the plane z = center.z, between two
+// angles (by default the full circle from angle 0).
 class CircleGeometry final : public CurveGeometry {
  public:
-  CircleGeometry(Vec3 center, double radius) : c_(center), r_(radius) {}
-  Interval range() const override { return {0, 2 * kPi}; }
+  CircleGeometry(Vec3 center, double radius, double from = 0, double to = 2 * kPi)
+      : c_(center), r_(radius), from_(from), to_(to) {}
+  Interval range() const override { return {from_, to_}; }
   Vec3 point(double t) const override { return c_ + Vec3{r_ * std::cos(t), r_ * std::sin(t), 0}; }
   Vec3 firstDerivative(double t) const override { return {-r_ * std::sin(t), r_ * std::cos(t), 0}; }
   Vec3 secondDerivative(double t) const override {
@@ -38,7 +41,7 @@ class CircleGeometry final : public CurveGeometry {
 
  private:
   Vec3 c_;
-  double r_;
+  double r_, from_, to_;
 };
 
 // The plane z = 0, parametrized by (u, v) -> (u, sign * v, 0): its normal is sign * z.
@@ -55,6 +58,46 @@ class FlatGeometry final : public SurfaceGeometry {
   double sign_;
 };
 
+// The unit sphere, (u, v) -> (cos v cos u, cos v sin u, sin v): longitude u, latitude v. Its
+// normal du x dv points outwards.
+class SphereGeometry final : public SurfaceGeometry {
+ public:
+  ParamBox bounds() const override { return {{-kPi, kPi}, {-kPi / 2, kPi / 2}}; }
+  Vec3 point(Vec2 uv) const override {
+    return {std::cos(uv.v) * std::cos(uv.u), std::cos(uv.v) * std::sin(uv.u), std::sin(uv.v)};
+  }
+  SurfaceDerivatives firstDerivatives(Vec2 uv) const override {
+    const double cu = std::cos(uv.u), su = std::sin(uv.u), cv = std::cos(uv.v), sv = std::sin(uv.v);
+    return {{-cv * su, cv * cu, 0}, {-sv * cu, -sv * su, cv}};
+  }
+  Vec2 project(Vec3 p) const override {
+    return {std::atan2(p.y, p.x), std::asin(std::clamp(p.z / norm(p), -1.0, 1.0))};
+  }
+  static constexpr double kPi = 3.14159265358979323846;
+};
+
+// The image on a surface of the parameter segment from a to b.
+class IsoCurve final : public CurveGeometry {
+ public:
+  IsoCurve(std::shared_ptr<const SurfaceGeometry> s, Vec2 a, Vec2 b)
+      : s_(std::move(s)), a_(a), b_(b) {}
+  Interval range() const override { return {0, 1}; }
+  Vec3 point(double t) const override { return s_->point(at(t)); }
+  Vec3 firstDerivative(double t) const override {
+    const SurfaceDerivatives d = s_->firstDerivatives(at(t));
+    return (b_.u - a_.u) * d.du + (b_.v - a_.v) * d.dv;
+  }
+  Vec3 secondDerivative(double t) const override {
+    constexpr double kStep = 1e-6;
+    return (firstDerivative(t + kStep) - firstDerivative(t - kStep)) / (2 * kStep);
+  }
+
+ private:
+  Vec2 at(double t) const { return {a_.u + t * (b_.u - a_.u), a_.v + t * (b_.v - a_.v)}; }
+  std::shared_ptr<const SurfaceGeometry> s_;
+  Vec2 a_, b_;
+};
+
 // Builds polygonal plane surfaces in z = 0 point by point.
 class PolygonModelBuilder {
  public:
@@ -67,22 +110,34 @@ class PolygonModelBuilder {
   }
   int line(int a, int b) {
     const int tag = ++curves_;
-    model.addCurve({tag, a, b,
-                    std::make_shared<SegmentGeometry>(model.point(a)->xyz, model.point(b)->xyz)});
+    model.addCurve(
+        {tag, a, b, std::make_shared<SegmentGeometry>(model.point(a)->xyz, model.point(b)->xyz)});
     return tag;
   }
   // A closed polygon through the given corners (x, y pairs), all with mesh size `size`.
   std::vector<int> polygon(const std::vector<Vec2>& corners, double size) {
     std::vector<int> pts, loop;
     for (Vec2 c : corners) pts.push_back(point(c.u, c.v, size));
-    for (std::size_t k = 0; k < pts.size(); ++k) loop.push_back(line(pts[k], pts[(k + 1) % pts.size()]));
+    for (std::size_t k = 0; k < pts.size(); ++k)
+      loop.push_back(line(pts[k], pts[(k + 1) % pts.size()]));
     return loop;
   }
   std::vector<int> circle(Vec2 center, double radius, double size) {
     const int p = point(center.u + radius, center.v, size);
     const int tag = ++curves_;
-    model.addCurve({tag, p, p, std::make_shared<CircleGeometry>(Vec3{center.u, center.v, 0}, radius)});
+    model.addCurve(
+        {tag, p, p, std::make_shared<CircleGeometry>(Vec3{center.u, center.v, 0}, radius)});
     return {tag};
+  }
+  int arc(Vec2 center, double radius, double from, double to, double size) {
+    const int a =
+        point(center.u + radius * std::cos(from), center.v + radius * std::sin(from), size);
+    const int b = point(center.u + radius * std::cos(to), center.v + radius * std::sin(to), size);
+    const int tag = ++curves_;
+    model.addCurve(
+        {tag, a, b,
+         std::make_shared<CircleGeometry>(Vec3{center.u, center.v, 0}, radius, from, to)});
+    return tag;
   }
   // Loops: the outer one first. The plane's normal is +z, or -z when `flipped`.
   ModelSurface& surface(std::vector<std::vector<int>> loops, bool flipped = false) {

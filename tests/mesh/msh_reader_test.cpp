@@ -239,6 +239,14 @@ TEST(MshReader, SurvivesTruncationAndCorruption) {
   expectRobust(write(r, {.binary = true, .version = 2.2}));
 }
 
+TEST(MshReader, AcceptsWindowsLineEnds) {
+  std::string crlf;
+  for (char c : kTwoSquares) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const ReadResult r = read(crlf);
+  EXPECT_EQ(r.mesh.nodeCount(), 15u);
+  EXPECT_EQ(write(r), kTwoSquares);
+}
+
 TEST(MshReader, SkipsUnknownSections) {
   std::string text = kTwoSquares;
   text.insert(text.find("$Entities"), "$Comments\nanything $Nodes\n$EndComments\n");

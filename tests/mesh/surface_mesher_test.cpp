@@ -118,7 +118,8 @@ TEST(SurfaceMesher, RectangleWithTenHoles) {
   std::vector<std::vector<int>> loops{b.polygon({{0, 0}, {5, 0}, {5, 2}, {0, 2}}, 0.1)};
   for (int i = 0; i < 5; ++i) {
     loops.push_back(b.circle({0.5 + i, 0.5}, 0.25, 0.1));
-    loops.push_back(b.polygon({{0.3 + i, 1.3}, {0.3 + i, 1.7}, {0.7 + i, 1.7}, {0.7 + i, 1.3}}, 0.1));
+    loops.push_back(
+        b.polygon({{0.3 + i, 1.3}, {0.3 + i, 1.7}, {0.7 + i, 1.7}, {0.7 + i, 1.3}}, 0.1));
   }
   b.surface(loops);
   const Mesh mesh = meshModel(b.model);
@@ -142,7 +143,9 @@ TEST(SurfaceMesher, GradedSizesFollowTheBoundary) {
   for (int k = 0; k < 4; ++k) loop.push_back(b.line(corners[k], corners[(k + 1) % 4]));
   b.surface({loop});
   const Mesh mesh = meshModel(b.model);
-  const SizeAt graded = [h](Vec3 p) { return h / 10 + 0.9 * h * std::min(1.0, std::max(p.x, p.y)); };
+  const SizeAt graded = [h](Vec3 p) {
+    return h / 10 + 0.9 * h * std::min(1.0, std::max(p.x, p.y));
+  };
   expectGoodSurfaceMesh(b.model, mesh, 1, graded);
 }
 
@@ -192,6 +195,57 @@ TEST(SurfaceMesher, SmoothingKeepsTheMeshValid) {
     const Mesh mesh = meshModel(b.model, options);
     expectGoodSurfaceMesh(b.model, mesh, 1, uniform(0.03));
   }
+}
+
+TEST(SurfaceMesher, CurvedSurfaceIsMeshedWithItsOwnLengths) {
+  // A patch of the unit sphere from the equator to latitude 1.2, a quarter turn wide: in the
+  // parameter plane the top edge is 2.8x shorter on the surface than the bottom one.
+  const double h = 0.05;
+  Model model;
+  const auto sphere = std::make_shared<testing::SphereGeometry>();
+  const std::vector<Vec2> corners{{0, 0},
+                                  {testing::SphereGeometry::kPi / 2, 0},
+                                  {testing::SphereGeometry::kPi / 2, 1.2},
+                                  {0, 1.2}};
+  ModelSurface patch{1, {{}}, sphere, {}, {}};
+  for (int k = 0; k < 4; ++k) model.addPoint({k + 1, sphere->point(corners[k]), h});
+  for (int k = 0; k < 4; ++k) {
+    model.addCurve({k + 1, k + 1, (k + 1) % 4 + 1,
+                    std::make_shared<testing::IsoCurve>(sphere, corners[k], corners[(k + 1) % 4])});
+    patch.loops[0].push_back(k + 1);
+  }
+  model.addSurface(patch);
+  const Mesh mesh = meshModel(model);
+  const MeshCheckReport report = checkMesh(model, mesh);  // orientation: outward normals
+  ASSERT_TRUE(report.ok()) << report.summary();
+  const ElementBlock* triangles = mesh.find({2, 1})->findBlock(ElementType::Triangle3);
+  for (std::size_t e = 0; e < triangles->size(); ++e) {
+    const auto n = triangles->element(e);
+    for (int i = 0; i < 3; ++i) {
+      const double l = distance(mesh.node(n[i]), mesh.node(n[(i + 1) % 3]));
+      EXPECT_GE(l, 0.5 * h);
+      EXPECT_LE(l, 2.0 * h);
+    }
+  }
+  const double exactArea = testing::SphereGeometry::kPi / 2 * std::sin(1.2);
+  EXPECT_NEAR(testing::meshArea(mesh, 1), exactArea, 2e-3 * exactArea);
+  const QualityStats gamma = meshQuality(mesh, 2, QualityMeasure::Gamma);
+  EXPECT_GT(gamma.min, 0.3);
+  EXPECT_GT(gamma.mean, 0.85);
+}
+
+TEST(SurfaceMesher, NotExtendingBoundarySizesUsesSizeMaxInside) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
+  MeshOptions options;
+  options.sizeExtendFromBoundary = false;
+  const Mesh coarse = meshModel(b.model, options);  // no size inside: boundary nodes only
+  EXPECT_TRUE(checkMesh(b.model, coarse).ok());
+  EXPECT_EQ(coarse.find({2, 1})->nodes.size(), 0u);
+  options.sizeMax = 0.05;  // boundary at 0.05 too (40 -> 80 segments), interior at 0.05
+  const Mesh fine = meshModel(b.model, options);
+  expectGoodSurfaceMesh(b.model, fine, 1, uniform(0.05));
+  EXPECT_GT(fine.nodeCount(), 450u);
 }
 
 TEST(SurfaceMesher, SelfIntersectingBoundaryIsAnErrorNamingTheSurface) {

@@ -164,7 +164,43 @@ TEST(VolumeMesher, IntersectingBoundaryIsAnError) {
   BoxSurface b(mesh, {0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, 1, 7);
   Model model = boxModel(2);
   model.addVolume({1, {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}}});
+  try {
+    meshVolume(model, MeshOptions{}, 1, mesh);
+    FAIL() << "no error";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("boundary intersects itself"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Two boxes touching along a face, each with its own nodes there: overlapping coplanar
+// triangles, not a valid boundary.
+TEST(VolumeMesher, OverlappingCoplanarTrianglesAreAnError) {
+  Mesh mesh;
+  BoxSurface a(mesh, {0, 0, 0}, {1, 1, 1}, 2, 1);
+  Mesh other;
+  BoxSurface b(other, {1, 0, 0}, {2, 1, 1}, 3, 7);
+  // Copy the second box into the first mesh with fresh node indices.
+  const NodeIndex offset = static_cast<NodeIndex>(mesh.nodeCount());
+  for (std::size_t i = 0; i < other.nodeCount(); ++i) mesh.addNode(other.node(i));
+  for (int s = 7; s <= 12; ++s) {
+    ElementBlock& tris = mesh.entity({2, s}).block(ElementType::Triangle3);
+    for (NodeIndex n : other.find({2, s})->findBlock(ElementType::Triangle3)->nodes)
+      tris.nodes.push_back(n + offset);
+  }
+  Model model = boxModel(2);
+  model.addVolume({1, {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}}});
   EXPECT_THROW(meshVolume(model, MeshOptions{}, 1, mesh), MeshError);
+}
+
+// A face folded onto its neighbour: two triangles sharing an edge, on the same side of it.
+TEST(VolumeMesher, FoldedBoundaryIsAnError) {
+  Mesh mesh;
+  BoxSurface box(mesh, {0, 0, 0}, {1, 1, 1}, 1, 1);
+  // Move the node at (1, 1, 1) into the plane z = 0, inside the bottom face.
+  for (NodeIndex i = 0; i < mesh.nodeCount(); ++i)
+    if (mesh.node(i) == Vec3{1, 1, 1}) mesh.setNode(i, {0.25, 0.5, 0});
+  EXPECT_THROW(meshVolume(boxModel(1), MeshOptions{}, 1, mesh), MeshError);
 }
 
 }  // namespace

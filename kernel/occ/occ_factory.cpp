@@ -1,0 +1,179 @@
+#include "kernel/occ/occ_factory.h"
+
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "kernel/geometry_error.h"
+#include "kernel/occ/occ_geometry.h"
+
+namespace geomesh {
+
+// Every shape the factory knows, by dimension: tag -> shape, and shape -> tag (the latter
+// compares shapes regardless of orientation).
+struct OccShapes {
+  std::map<int, TopoDS_Shape> byTag[4];
+  TopTools_DataMapOfShapeInteger tags[4];
+
+  int tagOf(int dim, const TopoDS_Shape& s) const { return tags[dim].Find(s); }
+  int maxTag(int dim) const { return byTag[dim].empty() ? 0 : byTag[dim].rbegin()->first; }
+  void bind(int dim, int tag, const TopoDS_Shape& s) {
+    byTag[dim][tag] = s;
+    tags[dim].Bind(s, tag);
+  }
+  // Tags the sub-shapes of `s` not yet known, in OpenCASCADE's exploration order.
+  void bindNewSubShapes(const TopoDS_Shape& s) {
+    static constexpr TopAbs_ShapeEnum kTypes[3] = {TopAbs_VERTEX, TopAbs_EDGE, TopAbs_FACE};
+    for (int dim = 0; dim < 3; ++dim)
+      for (TopExp_Explorer it(s, kTypes[dim]); it.More(); it.Next())
+        if (!tags[dim].IsBound(it.Current())) bind(dim, maxTag(dim) + 1, it.Current());
+  }
+};
+
+namespace {
+
+// Gmsh's box takes signed extents; OpenCASCADE's needs positive ones from the lowest corner.
+void normalizeBox(Vec3& corner, Vec3& extent, int tag) {
+  double* c[3] = {&corner.x, &corner.y, &corner.z};
+  double* e[3] = {&extent.x, &extent.y, &extent.z};
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(*c[i]) || !std::isfinite(*e[i]))
+      throw GeometryError("Box " + std::to_string(tag) + ": its dimensions are not finite");
+    if (*e[i] == 0) throw GeometryError("Box " + std::to_string(tag) + " has a zero extent");
+    if (*e[i] < 0) {
+      *c[i] += *e[i];
+      *e[i] = -*e[i];
+    }
+  }
+}
+
+int signedTag(int tag, const TopoDS_Shape& s) {
+  return s.Orientation() == TopAbs_REVERSED ? -tag : tag;
+}
+
+}  // namespace
+
+OccFactory::OccFactory() : shapes_(std::make_unique<OccShapes>()) {}
+OccFactory::~OccFactory() = default;
+OccFactory::OccFactory(OccFactory&&) noexcept = default;
+OccFactory& OccFactory::operator=(OccFactory&&) noexcept = default;
+
+int OccFactory::addBox(int tag, Vec3 corner, Vec3 extent) {
+  if (tag < 0) tag = shapes_->maxTag(3) + 1;
+  if (shapes_->byTag[3].contains(tag))
+    throw GeometryError("Volume " + std::to_string(tag) + " already exists");
+  normalizeBox(corner, extent, tag);
+  try {
+    BRepPrimAPI_MakeBox maker(gp_Pnt(corner.x, corner.y, corner.z), extent.x, extent.y,
+                              extent.z);
+    const TopoDS_Shape solid = maker.Solid();
+    shapes_->bind(3, tag, solid);
+    shapes_->bindNewSubShapes(solid);
+  } catch (const Standard_Failure& e) {
+    throw GeometryError("Box " + std::to_string(tag) + ": " + e.GetMessageString());
+  }
+  return tag;
+}
+
+double OccFactory::volume(int tag) const {
+  auto it = shapes_->byTag[3].find(tag);
+  if (it == shapes_->byTag[3].end())
+    throw GeometryError("Volume " + std::to_string(tag) + " is not defined");
+  GProp_GProps properties;
+  BRepGProp::VolumeProperties(it->second, properties);
+  return properties.Mass();
+}
+
+int OccFactory::maxTag(int dim) const {
+  return dim >= 0 && dim <= 3 ? shapes_->maxTag(dim) : 0;
+}
+
+void OccFactory::clear() { shapes_ = std::make_unique<OccShapes>(); }
+
+namespace {
+
+void exportPoints(const OccShapes& s, Model& model);
+void exportCurves(const OccShapes& s, Model& model);
+void exportSurfaces(const OccShapes& s, Model& model);
+void exportVolumes(const OccShapes& s, Model& model);
+
+}  // namespace
+
+void OccFactory::synchronize(Model& model) const {
+  exportPoints(*shapes_, model);
+  exportCurves(*shapes_, model);
+  exportSurfaces(*shapes_, model);
+  exportVolumes(*shapes_, model);
+}
+
+namespace {
+
+void exportPoints(const OccShapes& s, Model& model) {
+  for (const auto& [tag, shape] : s.byTag[0]) {
+    const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shape));
+    model.addPoint(ModelPoint{tag, {p.X(), p.Y(), p.Z()}, 0});
+  }
+}
+
+// A curve starts at the vertex of its first parameter, whatever the edge's orientation.
+void exportCurves(const OccShapes& s, Model& model) {
+  for (const auto& [tag, shape] : s.byTag[1]) {
+    const TopoDS_Edge edge = TopoDS::Edge(shape.Oriented(TopAbs_FORWARD));
+    const int start = s.tagOf(0, TopExp::FirstVertex(edge));
+    const int end = s.tagOf(0, TopExp::LastVertex(edge));
+    model.addCurve(ModelCurve{tag, start, end, makeOccCurve(edge)});
+  }
+}
+
+// Loops follow the face taken forward, so that the outer loop runs counter-clockwise in the
+// surface's parameter plane; an edge used against its own direction gets a negative tag.
+std::vector<int> wireLoop(const OccShapes& s, const TopoDS_Face& face,
+                          const TopoDS_Wire& wire) {
+  std::vector<int> loop;
+  for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
+    loop.push_back(signedTag(s.tagOf(1, it.Current()), it.Current()));
+  return loop;
+}
+
+void exportSurfaces(const OccShapes& s, Model& model) {
+  for (const auto& [tag, shape] : s.byTag[2]) {
+    const TopoDS_Face face = TopoDS::Face(shape.Oriented(TopAbs_FORWARD));
+    ModelSurface surface{tag, {}, makeOccSurface(face), {}, {}};
+    const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    surface.loops.push_back(wireLoop(s, face, outer));
+    for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())
+      if (!it.Current().IsSame(outer))
+        surface.loops.push_back(wireLoop(s, face, TopoDS::Wire(it.Current())));
+    model.addSurface(std::move(surface));
+  }
+}
+
+void exportVolumes(const OccShapes& s, Model& model) {
+  for (const auto& [tag, shape] : s.byTag[3]) {
+    ModelVolume volume{tag, {}};
+    for (TopExp_Explorer shell(shape, TopAbs_SHELL); shell.More(); shell.Next()) {
+      volume.shells.emplace_back();
+      for (TopExp_Explorer face(shell.Current(), TopAbs_FACE); face.More(); face.Next())
+        volume.shells.back().push_back(signedTag(s.tagOf(2, face.Current()), face.Current()));
+    }
+    model.addVolume(std::move(volume));
+  }
+}
+
+}  // namespace
+
+}  // namespace geomesh

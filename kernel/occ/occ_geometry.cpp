@@ -1,0 +1,87 @@
+#include "kernel/occ/occ_geometry.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_Surface.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+
+namespace geomesh {
+
+namespace {
+
+Vec3 toVec3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+class OccCurve final : public CurveGeometry {
+ public:
+  explicit OccCurve(const TopoDS_Edge& edge) : curve_(edge) {}
+
+  Interval range() const override { return {curve_.FirstParameter(), curve_.LastParameter()}; }
+  Vec3 point(double t) const override { return toVec3(curve_.Value(t).XYZ()); }
+  Vec3 firstDerivative(double t) const override {
+    gp_Pnt p;
+    gp_Vec d1;
+    curve_.D1(t, p, d1);
+    return toVec3(d1.XYZ());
+  }
+  Vec3 secondDerivative(double t) const override {
+    gp_Pnt p;
+    gp_Vec d1, d2;
+    curve_.D2(t, p, d1, d2);
+    return toVec3(d2.XYZ());
+  }
+
+ private:
+  BRepAdaptor_Curve curve_;
+};
+
+class OccSurface final : public SurfaceGeometry {
+ public:
+  explicit OccSurface(const TopoDS_Face& face)
+      : surface_(face), geom_(BRep_Tool::Surface(face)) {
+    BRepTools::UVBounds(face, bounds_.u.min, bounds_.u.max, bounds_.v.min, bounds_.v.max);
+  }
+
+  ParamBox bounds() const override { return bounds_; }
+  Vec3 point(Vec2 uv) const override { return toVec3(surface_.Value(uv.u, uv.v).XYZ()); }
+  SurfaceDerivatives firstDerivatives(Vec2 uv) const override {
+    gp_Pnt p;
+    gp_Vec du, dv;
+    surface_.D1(uv.u, uv.v, p, du, dv);
+    return {toVec3(du.XYZ()), toVec3(dv.XYZ())};
+  }
+  Vec2 project(Vec3 p) const override;
+  bool isPlane() const override { return surface_.GetType() == GeomAbs_Plane; }
+
+ private:
+  BRepAdaptor_Surface surface_;
+  Handle(Geom_Surface) geom_;  // with the face's location applied
+  ParamBox bounds_;
+};
+
+// The closest point of the underlying surface, searched within the face's parameter bounds;
+// when the search fails (a degenerate input) the bounds' centre is returned.
+Vec2 OccSurface::project(Vec3 p) const {
+  GeomAPI_ProjectPointOnSurf projection(gp_Pnt(p.x, p.y, p.z), geom_, bounds_.u.min,
+                                        bounds_.u.max, bounds_.v.min, bounds_.v.max);
+  if (projection.NbPoints() == 0)
+    return {(bounds_.u.min + bounds_.u.max) / 2, (bounds_.v.min + bounds_.v.max) / 2};
+  Standard_Real u = 0, v = 0;
+  projection.LowerDistanceParameters(u, v);
+  return {u, v};
+}
+
+}  // namespace
+
+std::shared_ptr<const CurveGeometry> makeOccCurve(const TopoDS_Edge& edge) {
+  return std::make_shared<OccCurve>(edge);
+}
+
+std::shared_ptr<const SurfaceGeometry> makeOccSurface(const TopoDS_Face& face) {
+  return std::make_shared<OccSurface>(face);
+}
+
+}  // namespace geomesh

@@ -1,0 +1,10 @@
+#pragma once
+
+namespace geomesh {
+
+// Memory used by this process and installed in the machine, in megabytes (the Memory and
+// TotalMemory constants of scripts); 0 where the system does not tell.
+double processMemoryMegabytes();
+double totalMemoryMegabytes();
+
+}  // namespace geomesh

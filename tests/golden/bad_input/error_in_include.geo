@@ -1,0 +1,2 @@
+a = 1;
+Include "error_in_include.inc";

@@ -1,0 +1,2 @@
+x = 3;
+Error("x is %g", x);

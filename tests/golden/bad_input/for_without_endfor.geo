@@ -1,0 +1,2 @@
+For i In {1:3}
+  Printf("%g", i);

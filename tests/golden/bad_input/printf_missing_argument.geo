@@ -1,0 +1,1 @@
+Printf("%g and %g", 1);

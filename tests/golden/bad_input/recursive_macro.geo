@@ -1,0 +1,4 @@
+Macro M
+  Call M;
+Return
+Call M;

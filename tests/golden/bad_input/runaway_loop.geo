@@ -1,0 +1,2 @@
+For i In {1:1e12}
+EndFor

@@ -1,0 +1,2 @@
+length = 2;
+b = lenght * 2;

@@ -1,0 +1,2 @@
+Printf("hello);
+a = 1;

@@ -1,0 +1,2 @@
+For i In {1:10:0}
+EndFor

@@ -1,0 +1,177 @@
+#include <gtest/gtest.h>
+
+#include "grammar/parse.h"
+
+namespace geomesh {
+namespace {
+
+using namespace ast;
+
+StmtList parse(std::string_view text) { return parseScript("p.geo", text); }
+
+// "line:col: message" of the syntax error in `text`, or "" if it parses.
+std::string syntaxError(std::string_view text) {
+  try {
+    parse(text);
+  } catch (const SyntaxError& error) {
+    return std::to_string(error.location().line) + ":" + std::to_string(error.location().column) +
+           ": " + error.what();
+  }
+  return "";
+}
+
+template <class Node>
+const Node& only(const StmtList& program) {
+  EXPECT_EQ(program.size(), 1u);
+  return std::get<Node>(program.at(0)->node);
+}
+
+TEST(Parser, AssignmentWithPrecedence) {
+  auto program = parse("a = 1 + 2 * -3 ^ 2;");
+  const auto& assign = only<AssignStmt>(program);
+  EXPECT_EQ(assign.target.name.base, "a");
+  EXPECT_EQ(assign.op, "=");
+  const Expr& sum = *assign.value;
+  ASSERT_EQ(sum.kind, ExprKind::Binary);
+  EXPECT_EQ(sum.text, "+");
+  const Expr& product = *sum.args[1];
+  EXPECT_EQ(product.text, "*");
+  const Expr& negation = *product.args[1];
+  ASSERT_EQ(negation.kind, ExprKind::Unary);
+  EXPECT_EQ(negation.args[0]->text, "^");  // -(3^2)
+}
+
+TEST(Parser, LocationsOfStatementsAndExpressions) {
+  auto program = parse("\n  x = 2;\n\ty = x;");
+  ASSERT_EQ(program.size(), 2u);
+  EXPECT_EQ(program[0]->loc, (SourceLocation{"p.geo", 2, 3}));
+  EXPECT_EQ(program[1]->loc, (SourceLocation{"p.geo", 3, 2}));
+  EXPECT_EQ(std::get<AssignStmt>(program[1]->node).value->loc, (SourceLocation{"p.geo", 3, 6}));
+}
+
+TEST(Parser, GeometryCommands) {
+  auto program = parse("Plane Surface(1) = {1, -2};");
+  const auto& command = only<CommandStmt>(program);
+  EXPECT_EQ(command.words, (std::vector<std::string>{"Plane", "Surface"}));
+  EXPECT_EQ(command.argStyle, CommandStmt::Args::Paren);
+  EXPECT_EQ(command.op, "=");
+  ASSERT_EQ(command.value->kind, ExprKind::List);
+  EXPECT_EQ(command.value->args.size(), 2u);
+}
+
+TEST(Parser, PhysicalWithNameAndTag) {
+  auto program = parse("Physical Surface(\"wall\", 5) = {1:3};");
+  const auto& command = only<CommandStmt>(program);
+  ASSERT_EQ(command.args.size(), 2u);
+  EXPECT_EQ(command.args[0]->kind, ExprKind::String);
+  EXPECT_EQ(command.value->args[0]->kind, ExprKind::Range);
+}
+
+TEST(Parser, ShapesWithBlocksAndTails) {
+  auto program = parse(
+      "Extrude {0, 0, 1} { Surface{1}; Layers{10}; Recombine; }\n"
+      "Transfinite Curve{1, 2} = 10 Using Progression 1.2;\n"
+      "Point{5} In Surface{1};\n"
+      "Periodic Surface{2} = {1} Translate{1, 0, 0};\n");
+  ASSERT_EQ(program.size(), 4u);
+  const auto& extrude = std::get<CommandStmt>(program[0]->node);
+  ASSERT_EQ(extrude.shape->parts.size(), 2u);
+  EXPECT_FALSE(extrude.shape->parts[0].isBlock);
+  EXPECT_TRUE(extrude.shape->parts[1].isBlock);
+  EXPECT_EQ(extrude.shape->parts[1].items.size(), 3u);
+  const auto& transfinite = std::get<CommandStmt>(program[1]->node);
+  EXPECT_EQ(transfinite.words, (std::vector<std::string>{"Transfinite", "Curve"}));
+  ASSERT_EQ(transfinite.tail.size(), 2u);
+  EXPECT_EQ(transfinite.tail[0].word, "Using");
+  EXPECT_EQ(transfinite.tail[1].word, "Progression");
+  EXPECT_EQ(transfinite.tail[1].value->number, 1.2);
+  EXPECT_EQ(std::get<CommandStmt>(program[2]->node).tail[0].word, "In");
+  EXPECT_EQ(std::get<CommandStmt>(program[3]->node).tail[0].value->words[0], "Translate");
+}
+
+TEST(Parser, OptionsAndFields) {
+  auto program = parse("Mesh.Color.Points = {1,2,3}; Field[1].PointsList = {1}; Field[2] = Box;");
+  ASSERT_EQ(program.size(), 3u);
+  EXPECT_EQ(std::get<OptionAssignStmt>(program[0]->node).path, "Mesh.Color.Points");
+  const auto& field = std::get<OptionAssignStmt>(program[1]->node);
+  EXPECT_EQ(field.path, "Field.PointsList");
+  EXPECT_NE(field.index, nullptr);
+  EXPECT_EQ(std::get<CommandStmt>(program[2]->node).value->text, "Box");
+}
+
+TEST(Parser, ListsRangesAndIndexing) {
+  auto program = parse("a[] = {1:10:2, b[], c[{0, 1}], #d[], e~{i}};");
+  const auto& assign = only<AssignStmt>(program);
+  EXPECT_EQ(assign.target.form, LValue::Form::List);
+  const auto& items = assign.value->args;
+  ASSERT_EQ(items.size(), 5u);
+  EXPECT_EQ(items[0]->kind, ExprKind::Range);
+  EXPECT_EQ(items[0]->args.size(), 3u);
+  EXPECT_EQ(items[1]->kind, ExprKind::WholeList);
+  EXPECT_EQ(items[2]->kind, ExprKind::Element);
+  EXPECT_EQ(items[3]->kind, ExprKind::Count);
+  EXPECT_EQ(items[4]->name.suffixes.size(), 1u);
+}
+
+TEST(Parser, ControlFlow) {
+  auto program = parse(
+      "For i In {1:3}\n  If (i == 2)\n    a = 1;\n  ElseIf (i == 3)\n    a = 2;\n  Else\n"
+      "    a = 3;\n  EndIf\nEndFor\nFor (1:2) EndFor\nMacro M\n  b = 1;\nReturn\nCall M;");
+  ASSERT_EQ(program.size(), 4u);
+  const auto& loop = std::get<ForStmt>(program[0]->node);
+  EXPECT_EQ(loop.variable.base, "i");
+  const auto& branches = std::get<IfStmt>(loop.body.at(0)->node);
+  EXPECT_EQ(branches.branches.size(), 2u);
+  EXPECT_EQ(branches.elseBody.size(), 1u);
+  EXPECT_TRUE(std::get<ForStmt>(program[1]->node).variable.base.empty());
+  EXPECT_EQ(std::get<MacroStmt>(program[2]->node).name, "M");
+}
+
+TEST(Parser, DefineConstantWithAndWithoutCommas) {
+  auto program = parse(
+      "DefineConstant[ a = 1, b = {2, Min 0, Max 10, Name \"P/b\"}\n"
+      "  c = {0, Choices{0=\"x\", 1=\"y\"}} s = \"str\" ];");
+  const auto& define = only<DefineConstantStmt>(program);
+  ASSERT_EQ(define.constants.size(), 4u);
+  EXPECT_EQ(define.constants[1].attributes.size(), 3u);
+  EXPECT_EQ(define.constants[1].value->number, 2);
+  EXPECT_EQ(define.constants[2].attributes[0].values.size(), 4u);
+}
+
+TEST(Parser, MissingSemicolonPointsAfterThePreviousToken) {
+  EXPECT_EQ(syntaxError("a = 1\nb = 2;"), "1:6: expected ';' after '1' (found 'b')");
+  EXPECT_EQ(syntaxError("Point(1) = {0, 0, 0}"),
+            "1:21: expected ';' after '}' (found end of file)");
+}
+
+TEST(Parser, UnexpectedTokenNamesWhatWasExpected) {
+  EXPECT_EQ(syntaxError("a = (1 + 2;"), "1:11: unexpected ';', expected ')'");
+  EXPECT_EQ(syntaxError("a = * 2;"), "1:5: unexpected '*', expected an expression");
+  EXPECT_EQ(syntaxError("For i In {1:2}\n a = 1;\n"),
+            "3:1: unexpected end of file, expected 'EndFor'");
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(ParserLimits, DeepNestingIsASyntaxErrorNotACrash) {
+  std::string deep = "a = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";";
+  EXPECT_EQ(syntaxError(deep), "1:261: nesting deeper than 256 levels");
+  std::string sum = "a = 1";
+  for (int i = 0; i < 5000; ++i) sum += "+1";
+  EXPECT_EQ(syntaxError(sum + ";").substr(0, 40), "1:4004: expression too deeply nested (mo");
+  std::string loops;
+  for (int i = 0; i < 300; ++i) loops += "For (1:2)\n";
+  EXPECT_EQ(syntaxError(loops), "256:5: nesting deeper than 256 levels");
+}
+
+TEST(ParserLimits, CommentMarkersInsideStringsAreText) {
+  auto program = parse("s = \"a // b /* c\";");
+  EXPECT_EQ(std::get<AssignStmt>(program.at(0)->node).value->text, "a // b /* c");
+}
+
+}  // namespace
+}  // namespace geomesh

@@ -1,0 +1,133 @@
+#include <gtest/gtest.h>
+
+#include "script_runner.h"
+
+namespace geomesh::testing {
+namespace {
+
+constexpr const char* kSquare =
+    "lc = 0.1;\n"
+    "Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc};\n"
+    "Point(3) = {1, 1, 0, lc}; Point(4) = {0, 1, 0};\n"
+    "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n";
+
+TEST(Geometry, SquareSurface) {
+  ScriptRun run;
+  run.run(std::string(kSquare) + "Curve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n");
+  run.session.synchronize();
+  const Model& model = run.session.model();
+  EXPECT_EQ(model.points().size(), 4u);
+  EXPECT_EQ(model.curves().size(), 4u);
+  EXPECT_EQ(model.surfaces().size(), 1u);
+  EXPECT_EQ(model.point(2)->xyz, (Vec3{1, 0, 0}));
+  EXPECT_EQ(model.point(1)->meshSize, 0.1);
+}
+
+TEST(Geometry, CircleArcs) {
+  ScriptRun run;
+  run.run("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {0, 1, 0}; Point(4) = {-1, 0, 0};\n"
+          "Circle(1) = {2, 1, 3}; Circle(2) = {3, 1, 4}; Line(3) = {4, 2};\n"
+          "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  run.session.synchronize();
+  EXPECT_EQ(run.session.model().curves().size(), 3u);
+  EXPECT_EQ(run.session.model().curve(1)->startPoint, 2);
+  EXPECT_EQ(run.session.model().curve(1)->endPoint, 3);
+}
+
+TEST(Geometry, CircleErrorsCarryTheLocation) {
+  std::string error = firstLineOf("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0};\nCircle(1) = {2, 1, 7};");
+  EXPECT_EQ(error.substr(0, 21), "test.geo:2:1: error: ") << error;
+}
+
+TEST(Geometry, OldLineLoopAndNegativeTags) {
+  ScriptRun run;
+  run.run(std::string(kSquare) + "Line Loop(5) = {-4, -3, -2, -1};\nPlane Surface(2) = {5};\n");
+  run.session.synchronize();
+  EXPECT_NE(run.session.model().surface(2), nullptr);
+}
+
+TEST(Geometry, NewTagCounters) {
+  EXPECT_EQ(printed("Point(20) = {0,0,0};\n"
+                    "Printf(\"%g %g %g %g\", newreg, newp, newl, news);"),
+            "1 21 1 1\n");
+  EXPECT_EQ(printed(std::string(kSquare) + "Curve Loop(7) = {1,2,3,4};\n"
+                    "Printf(\"%g %g %g %g\", newreg, newll, newcl, news);"),
+            "8 8 8 8\n");
+}
+
+TEST(Geometry, PointCoordinatesAsAValue) {
+  EXPECT_EQ(printed("Point(3) = {1, 2, 3};\nc[] = Point{3};\nPrintf(\"%g %g %g\", c[0], c[1], c[2]);"),
+            "1 2 3\n");
+}
+
+TEST(Geometry, KernelErrorsCarryTheStatementLocation) {
+  std::string error = firstLineOf("Point(1) = {0,0,0};\n  Line(1) = {1, 9};");
+  EXPECT_EQ(error.substr(0, 21), "test.geo:2:3: error: ") << error;
+  EXPECT_NE(error.find('9'), std::string::npos) << error;
+}
+
+TEST(Geometry, BadArgumentsAreErrors) {
+  EXPECT_EQ(firstLineOf("Point(1) = {0, 0};"),
+            "test.geo:1:12: error: Point takes {x, y, z} or {x, y, z, size}, not 2 values");
+  EXPECT_EQ(firstLineOf("Point(0) = {0, 0, 0};"),
+            "test.geo:1:7: error: tag of 'Point' must be a positive integer");
+}
+
+TEST(Geometry, PhysicalGroupsByTagAndName) {
+  ScriptRun run;
+  run.run(
+      "Point(1) = {0,0,0}; Point(5) = {1,0,0};\n"
+      "Physical Point(\"a\") = {1};\n"
+      "Physical Point(7) = {1};\n"
+      "Physical Point(\"b\") = {5};\n"
+      "Physical Point(\"c\", 20) = {5};\n"
+      "Physical Point(\"a\") += {5};\n"
+      "Printf(\"%g\", newreg);\n");
+  EXPECT_EQ(run.out.str(), "21\n");
+  run.session.synchronize();
+  const auto& groups = run.session.model().physicalGroups();
+  ASSERT_TRUE(groups.contains({0, 1}));
+  EXPECT_EQ(groups.at({0, 1}).name, "a");
+  EXPECT_EQ(groups.at({0, 1}).entities, (std::vector<int>{1, 5}));
+  EXPECT_EQ(groups.at({0, 8}).name, "b");
+  EXPECT_EQ(groups.at({0, 20}).name, "c");
+  EXPECT_TRUE(groups.contains({0, 7}));
+}
+
+TEST(Geometry, NamedPhysicalTagsCountAcrossDimensions) {
+  ScriptRun run;
+  run.run(std::string(kSquare) +
+          "Physical Point(4) = {1};\nPhysical Curve(\"c\") = {1, 2};\nPhysical Line(\"d\") = {3};\n");
+  run.session.synchronize();
+  const auto& groups = run.session.model().physicalGroups();
+  EXPECT_EQ(groups.at({1, 5}).name, "c");
+  EXPECT_EQ(groups.at({1, 6}).name, "d");
+}
+
+TEST(Geometry, UnsupportedStatementsWarnAndContinue) {
+  ScriptRun run;
+  run.run(
+      "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
+      "Ellipse(1) = {2, 1, 3, 3};\n"
+      "Extrude {0, 0, 1} { Point{1}; Layers{4}; Recombine; }\n"
+      "Transfinite Curve{1} = 10 Using Progression 1.1;\n"
+      "Field[1] = Distance; Field[1].PointsList = {1};\n"
+      "Printf(\"done\");\n");
+  EXPECT_EQ(run.out.str(), "done\n");
+  ASSERT_EQ(run.log.warnings.size(), 5u);
+  EXPECT_EQ(run.log.warnings[0], "test.geo:2:1: warning: 'Ellipse' is not supported yet; ignored");
+  EXPECT_EQ(run.log.warnings[1], "test.geo:3:1: warning: 'Extrude' is not supported yet; ignored");
+  EXPECT_EQ(run.log.warnings[2],
+            "test.geo:4:1: warning: 'Transfinite Curve' is not supported yet; ignored");
+}
+
+TEST(Geometry, InterfaceStatementsAreAcceptedSilently) {
+  ScriptRun run;
+  run.run("Point(1) = {0,0,0};\nHide {Point{1};}\nShow \"*\";\nDraw;\nColor Red {Point{1};}\n"
+          "View \"v\" { SP(0,0,0){1}; };\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+}
+
+}  // namespace
+}  // namespace geomesh::testing

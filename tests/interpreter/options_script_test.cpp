@@ -1,0 +1,47 @@
+#include <gtest/gtest.h>
+
+#include "script_runner.h"
+
+namespace geomesh::testing {
+namespace {
+
+TEST(ScriptOptions, SetAndReadIncludingOldNames) {
+  ScriptRun run;
+  run.run("Mesh.CharacteristicLengthMax = 0.3;\nMesh.MeshSizeMin = 0.01;\n"
+          "Geometry.Tolerance *= 2;\nMesh.Algorithm = 5;\n"
+          "Printf(\"%g %g %g\", Mesh.MeshSizeMax, Mesh.CharacteristicLengthMin, Geometry.Tolerance);");
+  EXPECT_EQ(run.out.str(), "0.3 0.01 2e-08\n");
+  EXPECT_EQ(run.session.options().number("Mesh.Algorithm"), 5);
+  EXPECT_EQ(run.session.meshOptions().sizeMax, 0.3);
+}
+
+TEST(ScriptOptions, StringsAndColours) {
+  ScriptRun run;
+  run.run("Geometry.OCCTargetUnit = \"M\";\nGeneral.Color.Background = {255, 0, 0};\n"
+          "Mesh.Color.Nodes = Red;\n");
+  EXPECT_EQ(run.session.options().string("Geometry.OCCTargetUnit"), "M");
+  EXPECT_EQ(run.session.options().number("General.Color.Background"), 255 * 65536);
+}
+
+TEST(ScriptOptions, UnknownOptionSuggestsTheClosest) {
+  EXPECT_EQ(firstLineOf("Mesh.MeshSizeMn = 1;"),
+            "test.geo:1:1: error: unknown option 'Mesh.MeshSizeMn'; did you mean 'Mesh.MeshSizeMin'?");
+  EXPECT_EQ(firstLineOf("x = Mesh.Algoritm;"),
+            "test.geo:1:5: error: unknown option 'Mesh.Algoritm'; did you mean 'Mesh.Algorithm'?");
+}
+
+TEST(ScriptOptions, WrongValueTypes) {
+  EXPECT_EQ(firstLineOf("Mesh.Algorithm = \"x\";"),
+            "test.geo:1:18: error: option 'Mesh.Algorithm' takes a number");
+  EXPECT_EQ(firstLineOf("Geometry.OCCTargetUnit = 3;"),
+            "test.geo:1:26: error: option 'Geometry.OCCTargetUnit' takes a string");
+}
+
+TEST(ScriptOptions, OtherCategoriesWarn) {
+  ScriptRun run;
+  run.run("View[0].Visible = 0;\nPrint.Width = 100;\n");
+  EXPECT_EQ(run.log.warnings.size(), 2u);
+}
+
+}  // namespace
+}  // namespace geomesh::testing

@@ -1,0 +1,91 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "script_runner.h"
+
+namespace geomesh::testing {
+namespace {
+
+// Statements the kernel cannot carry out yet: each parses, warns at its location, and the
+// script goes on.
+constexpr const char* kStatements[] = {
+    "Circle(5) = {0, 0, 0, 1};",
+    "Ellipse(6) = {1, 2, 3, 4};",
+    "Spline(7) = {1:3};",
+    "BSpline(8) = {1, 2, 3};",
+    "Transfinite Curve{1, 2} = 10 Using Progression 1.2;",
+    "Transfinite Curve{3} = 10 Using Bump 0.2;",
+    "Transfinite Surface{1} = {1, 2, 3, 4} Alternated;",
+    "Transfinite Surface{:};",
+    "Recombine Surface{1};",
+    "Field[1] = Distance;",
+    "Field[1].PointsList = {1};",
+    "Field[2] = Box;",
+    "Background Field = 2;",
+    "MeshSize{1, 2} = 0.05;",
+    "Characteristic Length{3} = 0.02;",
+    "Point{3} In Surface{1};",
+    "Periodic Curve{1} = {3} Translate{0, 1, 0};",
+    "Extrude {0, 0, 1} { Surface{1}; Layers{ {4, 2}, {0.5, 1} }; Recombine; }",
+    "out[] = Extrude {0, 0, 1} { Surface{1}; };",
+    "Translate {1, 0, 0} { Duplicata { Surface{1}; } }",
+    "Rotate {{0, 0, 1}, {0, 0, 0}, Pi / 2} { Point{3}; }",
+    "Symmetry {1, 0, 0, 0} { Point{3}; }",
+    "Dilate {{0, 0, 0}, 2} { Point{3}; }",
+    "b[] = Boundary{ Surface{1}; };",
+    "Delete { Point{3}; }",
+    "Recursive Delete { Surface{1}; }",
+    "Coherence;",
+    "Compound Curve{1, 2};",
+    "Reverse Surface{1};",
+    "Smoother Surface{1} = 3;",
+    "Plugin(Smooth).Dimension = 2;",
+    "Plugin(Smooth).Run;",
+    "Save \"x.msh\";",
+    "Mesh 2;",
+    "SetOrder 2;",
+    "Merge \"whatever.msh\";",
+    "SetFactory(\"OpenCASCADE\");",
+    "Box(11) = {0, 0, 0, 1, 1, 1};",
+    "v() = BooleanUnion{ Volume{10}; Delete; }{ Volume{11}; Delete; };",
+    "BooleanDifference(12) = { Volume{10}; Delete; }{ Volume{11}; Delete; };",
+    "MeshAlgorithm Surface {1} = 6;",
+    "vin() = Volume In BoundingBox {0, 0, 0, 1, 1, 1};",
+    "Background Mesh View[0];",
+};
+
+TEST(Unsupported, EachStatementWarnsOnceAtItsLocation) {
+  for (const char* statement : kStatements) {
+    ScriptRun run;
+    run.run(std::string("Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n") +
+            statement + "\nPrintf(\"after\");\n");
+    EXPECT_EQ(run.out.str(), "after\n") << statement;
+    ASSERT_EQ(run.log.warnings.size(), 1u) << statement;
+    EXPECT_EQ(run.log.warnings[0].substr(0, 9), "test.geo:") << statement;
+    EXPECT_NE(run.log.warnings[0].find("not supported yet"), std::string::npos)
+        << run.log.warnings[0];
+  }
+}
+
+TEST(Unsupported, WarningsNameTheStatement) {
+  ScriptRun run;
+  run.run("Point{3} In Surface{1};\nMesh 2;\n");
+  ASSERT_EQ(run.log.warnings.size(), 2u);
+  EXPECT_EQ(run.log.warnings[0], "test.geo:1:1: warning: 'Point In Surface' is not supported yet; ignored");
+  EXPECT_EQ(run.log.warnings[1].substr(0, 36), "test.geo:2:1: warning: 'Mesh' in a s");
+}
+
+TEST(Unsupported, BuiltInFactoryIsAccepted) {
+  ScriptRun run;
+  run.run("SetFactory(\"Built-in\");\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+}
+
+TEST(SystemConstants, MemoryIsMeasured) {
+  EXPECT_EQ(printed("Printf(\"%g %g\", Memory > 0, TotalMemory >= Memory);"), "1 1\n");
+  EXPECT_EQ(printed("Printf(\"%g\", Cpu >= 0);"), "1\n");
+}
+
+}  // namespace
+}  // namespace geomesh::testing

@@ -1,0 +1,82 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "stdlib/edit_distance.h"
+#include "stdlib/format.h"
+#include "stdlib/math_functions.h"
+#include "stdlib/ranges.h"
+
+namespace geomesh {
+namespace {
+
+std::vector<double> range(double a, double b, std::optional<double> step = std::nullopt) {
+  return expandRange(a, b, step);
+}
+
+TEST(Ranges, DirectionAndStep) {
+  EXPECT_EQ(range(1, 3), (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(range(3, 1), (std::vector<double>{3, 2, 1}));
+  EXPECT_EQ(range(10, 6, -2), (std::vector<double>{10, 8, 6}));
+  EXPECT_TRUE(range(1, 3, -1).empty());
+  EXPECT_EQ(range(0, 1, 0.3).size(), 4u);
+  EXPECT_EQ(range(0, 1, 0.1).size(), 11u);
+  EXPECT_THROW(range(0, 1, 0), std::invalid_argument);
+}
+
+TEST(Ranges, LinAndLogSpace) {
+  EXPECT_EQ(linSpace(0, 1, 5), (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
+  EXPECT_DOUBLE_EQ(logSpace(0, 2, 3)[2], 100);
+}
+
+TEST(MathFunctions, GmshSemantics) {
+  RandomEngine random;
+  auto call = [&](std::string_view name, std::vector<double> args) {
+    return *callMathFunction(name, args, random);
+  };
+  EXPECT_EQ(call("Round", {2.5}), 3);
+  EXPECT_EQ(call("Round", {-2.5}), -2);
+  EXPECT_EQ(call("Modulo", {-7, 3}), -1);
+  EXPECT_EQ(call("Step", {0.5}), 1);
+  EXPECT_EQ(call("Step", {-0.5}), 0);
+  EXPECT_DOUBLE_EQ(call("Atan2", {1, 1}), M_PI / 4);
+  EXPECT_EQ(call("Hypot", {3, 4}), 5);
+  double r = call("Rand", {2});
+  EXPECT_GE(r, 0);
+  EXPECT_LT(r, 2);
+  EXPECT_FALSE(callMathFunction("Nope", {}, random));
+  EXPECT_THROW(call("Sin", {1, 2}), std::invalid_argument);
+}
+
+std::string fmt(std::string_view format, std::vector<FormatArgument> args) {
+  return formatPrintf(format, args);
+}
+
+TEST(Format, CConversions) {
+  EXPECT_EQ(fmt("%g %f %e", {1.5, 2.0, 3.0}), "1.5 2.000000 3.000000e+00");
+  EXPECT_EQ(fmt("%d|%5.2f|%-4d|%03d", {3.7, 2.0, 7.0, 5.0}), "3| 2.00|7   |005");
+  EXPECT_EQ(fmt("%x %o %c", {255.0, 8.0, 65.0}), "ff 10 A");
+  EXPECT_EQ(fmt("%s=%g", {std::string("a"), 1.0}), "a=1");
+  EXPECT_EQ(fmt("100%%", {}), "100%");
+  EXPECT_EQ(fmt("%ld %lf", {4.0, 0.5}), "4 0.500000");
+}
+
+TEST(Format, ArgumentCountMismatchesThrow) {
+  EXPECT_THROW(fmt("%g %g", {1.0}), std::invalid_argument);
+  EXPECT_THROW(fmt("%g", {1.0, 2.0}), std::invalid_argument);
+  EXPECT_THROW(fmt("%y", {1.0}), std::invalid_argument);
+  EXPECT_THROW(fmt("%d", {std::string("x")}), std::invalid_argument);
+}
+
+TEST(EditDistance, DistancesAndSuggestions) {
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+  EXPECT_EQ(editDistance("abc", "ABC"), 0u);
+  std::vector<std::string> names{"length", "width", "height"};
+  EXPECT_EQ(closestNames("lenght", names).front(), "length");
+  EXPECT_EQ(closestNames("widht", names, 1), (std::vector<std::string>{"width"}));
+  EXPECT_TRUE(closestNames("zzz", names).empty());
+}
+
+}  // namespace
+}  // namespace geomesh

@@ -1,0 +1,100 @@
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "stdlib/options.h"
+
+namespace geomesh {
+namespace {
+
+TEST(OptionRegistry, RequiredDefaults) {
+  OptionRegistry options;
+  const std::pair<const char*, double> defaults[] = {
+      {"Mesh.MeshSizeMin", 0},          {"Mesh.MeshSizeMax", 1e22},
+      {"Mesh.MeshSizeFactor", 1},       {"Mesh.MeshSizeFromPoints", 1},
+      {"Mesh.MeshSizeExtendFromBoundary", 1}, {"Mesh.MeshSizeFromCurvature", 0},
+      {"Mesh.Algorithm", 6},            {"Mesh.Algorithm3D", 1},
+      {"Mesh.Smoothing", 1},            {"Mesh.ElementOrder", 1},
+      {"Mesh.SaveAll", 0},              {"Mesh.Binary", 0},
+      {"Mesh.MshFileVersion", 4.1},     {"Mesh.RandomFactor", 1e-9},
+      {"Mesh.RecombineAll", 0},         {"Mesh.Optimize", 1},
+      {"General.NumThreads", 1},        {"General.Verbosity", 5},
+      {"Geometry.Tolerance", 1e-8},     {"Geometry.AutoCoherence", 1},
+      {"Mesh.Format", 1}};
+  for (const auto& [name, value] : defaults) {
+    ASSERT_TRUE(options.hasNumber(name)) << name;
+    EXPECT_DOUBLE_EQ(options.number(name), value) << name;
+  }
+}
+
+TEST(OptionRegistry, EveryOptionHasHelpAndCoversTheThreeCategories) {
+  OptionRegistry options;
+  EXPECT_GT(options.all().size(), 500u);
+  for (const auto& option : options.all()) EXPECT_FALSE(option.help.empty()) << option.name;
+  EXPECT_TRUE(options.hasString("General.DefaultFileName"));
+  EXPECT_TRUE(options.hasNumber("Geometry.OldNewReg"));
+}
+
+TEST(OptionRegistry, OldNamesAreAliases) {
+  OptionRegistry options;
+  options.setNumber("Mesh.CharacteristicLengthMin", 0.5);
+  EXPECT_EQ(options.number("Mesh.MeshSizeMin"), 0.5);
+  options.setNumber("Mesh.MeshSizeMax", 2);
+  EXPECT_EQ(options.number("Mesh.CharacteristicLengthMax"), 2);
+  for (const char* alias : {"Mesh.CharacteristicLengthFactor", "Mesh.CharacteristicLengthFromPoints",
+                            "Mesh.CharacteristicLengthExtendFromBoundary"})
+    EXPECT_TRUE(options.hasNumber(alias)) << alias;
+  EXPECT_EQ(options.find("Mesh.CharacteristicLengthFactor")->name, "Mesh.MeshSizeFactor");
+}
+
+TEST(OptionRegistry, UnknownNamesThrowAndAreCaseSensitive) {
+  OptionRegistry options;
+  EXPECT_THROW(options.number("Mesh.NoSuchOption"), std::out_of_range);
+  EXPECT_THROW(options.setNumber("mesh.meshsizemin", 1), std::out_of_range);
+  EXPECT_THROW(options.string("Mesh.MeshSizeMin"), std::out_of_range);
+  EXPECT_FALSE(options.hasString("Mesh.MeshSizeMin"));
+}
+
+TEST(OptionRegistry, StringsAndColours) {
+  OptionRegistry options;
+  options.setString("Geometry.OCCTargetUnit", "M");
+  EXPECT_EQ(options.string("Geometry.OCCTargetUnit"), "M");
+  EXPECT_EQ(options.find("General.Color.Background")->type, OptionType::Color);
+  EXPECT_TRUE(options.hasNumber("General.Color.Background"));
+}
+
+TEST(OptionRegistry, SuggestsCloseNames) {
+  OptionRegistry options;
+  auto close = options.suggestions("Mesh.MeshSizeMn");
+  ASSERT_FALSE(close.empty());
+  EXPECT_EQ(close.front(), "Mesh.MeshSizeMin");
+  EXPECT_TRUE(options.suggestions("Completely.Different").empty());
+}
+
+TEST(OptionRegistry, ResetRestoresDefaults) {
+  OptionRegistry options;
+  options.setNumber("Mesh.Algorithm", 5);
+  options.reset();
+  EXPECT_EQ(options.number("Mesh.Algorithm"), 6);
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(OptionListing, LinesInScriptSyntax) {
+  OptionRegistry options;
+  EXPECT_EQ(optionListingLine(*options.find("Mesh.MeshSizeMin")),
+            "Mesh.MeshSizeMin = 0; // lower bound on the element size "
+            "(old name: Mesh.CharacteristicLengthMin)");
+  EXPECT_EQ(optionListingLine(*options.find("General.Color.Background")).substr(0, 41),
+            "General.Color.Background = {255,255,255};");
+  options.setNumber("Mesh.MshFileVersion", 2.2);
+  EXPECT_EQ(optionListingLine(*options.find("Mesh.MshFileVersion")).substr(0, 28),
+            "Mesh.MshFileVersion = 2.2; /");
+}
+
+}  // namespace
+}  // namespace geomesh
