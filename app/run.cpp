@@ -12,7 +12,9 @@
 #include "interpreter/session.h"
 #include "kernel/geometry_error.h"
 #include "mesh/generate.h"
+#include "mesh/io/msh_reader.h"
 #include "mesh/io/msh_writer.h"
+#include "mesh/mesh_check.h"
 
 namespace geomesh {
 
@@ -120,7 +122,42 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   log.info(formatSummary(summarizeMesh(session.model(), session.mesh())));
 }
 
+bool isMeshFile(const std::string& path) {
+  return std::filesystem::path(path).extension() == ".msh";
+}
+
+// A mesh file as input: read it, check it if asked (-check), convert it if asked (-o/-format).
+int runMeshFile(const CommandLine& cl, ConsoleLog& log) {
+  const std::string& path = cl.files.front();
+  Model model;
+  Mesh mesh;
+  Stopwatch watch;
+  log.info("Reading '" + path + "'...");
+  readMshFile(path, model, mesh);
+  log.info("Done reading '" + path + "' (" + formatSeconds(watch.seconds()) + ")");
+  log.info(formatSummary(summarizeMesh(model, mesh)));
+  int status = 0;
+  if (cl.check) {
+    MeshCheckReport report = checkMesh(model, mesh);
+    if (report.ok()) {
+      log.info("Check: no problem found");
+    } else {
+      log.error("Check: " + std::to_string(report.problems.size()) + " problem(s)\n" +
+                report.summary());
+      status = 1;
+    }
+  }
+  if (!cl.output.empty()) {
+    OptionRegistry options;
+    applyOptions(cl, options);
+    writeMshFile(cl.output, model, mesh, writeOptions(cl, options));
+    log.info("Wrote '" + cl.output + "'");
+  }
+  return status;
+}
+
 int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
+  if (isMeshFile(cl.files.front())) return runMeshFile(cl, log);
   Session session(log, out);
   for (const auto& [name, value] : cl.setNumbers) session.numberOverrides()[name] = value;
   for (const auto& [name, value] : cl.setStrings) session.stringOverrides()[name] = value;
@@ -173,6 +210,8 @@ int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ost
     return runSession(cl, out, log);
   } catch (const ScriptError& e) {
     log.diagnostic(e.what());
+  } catch (const MshReadError& e) {
+    log.error(e.what());
   } catch (const MeshError& e) {
     log.error(e.what());
   } catch (const GeometryError& e) {

@@ -74,6 +74,7 @@ struct Expr {
 struct LValue {
   enum class Form { Scalar, List, Element };
   Form form = Form::Scalar;
+  bool parenthesized = false;  // the old a() / a(i) syntax
   Name name;
   ExprPtr index;  // Element
 };

@@ -1,8 +1,10 @@
 // The .geo lexer. re2c turns this file into generated/grammar/lexer.cpp at build time.
 #include "grammar/lexer.h"
+#include "grammar/keywords.h"
 
 #include <algorithm>
 #include <charconv>
+#include <span>
 #include <string_view>
 
 namespace geomesh {
@@ -10,38 +12,8 @@ namespace {
 
 using Token = Parser::token;
 
-// Words that start or continue a command (statement heads and shape kinds).
-constexpr std::string_view kCommandWords[] = {
-    "Abort", "Affine", "AdaptMesh", "Background", "Bezier", "Block", "BooleanDifference",
-    "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
-    "BSpline", "Chamfer", "ClassifySurfaces", "Closest", "CreateGeometry", "Characteristic", "Circle", "Cohomology", "Coherence", "Color",
-    "CombinedBoundary", "Compound", "Cone", "CreateTopology", "Curve", "Cylinder", "Delete",
-    "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Error", "Exit", "Extrude", "Field",
-    "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide", "Homology", "Include",
-    "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm", "MeshSize", "NewModel", "NonBlockingSystem",
-    "OptimizeMesh", "PartitionMesh", "Periodic", "Physical", "Physicals", "Plane", "Point", "PointsOf",
-    "PostProcessing", "Print", "Printf", "QuadTriAddVerts", "QuadTriNoNewVerts", "Recombine",
-    "Recursive", "Rectangle", "RefineMesh", "RelocateMesh", "RenumberMeshElements", "RenumberMeshNodes", "Reverse", "Rotate", "Ruled",
-    "Save", "SetChanged", "ShapeFromFile", "SetFactory", "SetNumber", "SetOrder", "SetString", "Show", "Sleep",
-    "Smoother", "Solver", "Sphere", "Spline", "Surface", "Symmetry", "System", "ThruSections",
-    "Torus", "Transfinite", "Translate", "View", "Volume", "Warning", "Wedge", "Wire",
-};
-
-// Words that only appear after a shape: Point{1} In Surface{2}; ... Using Progression 2;
-constexpr std::string_view kTailWords[] = {
-    "AlternateLeft", "AlternateRight", "Alternated", "Beta", "Bump", "Left", "Progression",
-    "Right", "Using",
-};
-
-// Attribute names inside DefineConstant[...] / DefineNumber[...] / DefineString[...].
-constexpr std::string_view kAttributeNames[] = {
-    "AutoCheck", "ChangedValue", "Choices", "Closed", "Graph", "GmshOption", "Help",
-    "Highlight", "Kind", "Label", "Loop", "Max", "Min", "Name", "NeverChanged", "Path",
-    "ReadOnly", "ReadOnlyRange", "ServerAction", "Step", "Units", "Visible",
-};
-
-bool contains(const auto& table, std::string_view word) {
-  return std::find(std::begin(table), std::end(table), word) != std::end(table);
+bool contains(std::span<const std::string_view> table, std::string_view word) {
+  return std::find(table.begin(), table.end(), word) != table.end();
 }
 
 }  // namespace
@@ -117,10 +89,10 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
     if (text == "DefineNumber") return Parser::make_DEFINENUMBER(where);
     return Parser::make_DEFINESTRING(where);
   }
-  if (defineDepth_ > 0 && contains(kAttributeNames, text) && !nextNonSpaceIs('('))
+  if (defineDepth_ > 0 && contains(attributeNames(), text) && !nextNonSpaceIs('('))
     return Parser::make_ATTR(std::move(text), where);
-  if (contains(kCommandWords, text)) return Parser::make_WORD(std::move(text), where);
-  if (contains(kTailWords, text)) return Parser::make_TAILWORD(std::move(text), where);
+  if (contains(commandWords(), text)) return Parser::make_WORD(std::move(text), where);
+  if (contains(tailWords(), text)) return Parser::make_TAILWORD(std::move(text), where);
   return Parser::make_IDENT(std::move(text), where);
 }
 

@@ -109,11 +109,13 @@ name:
 lvalue:
   name { $$.name = std::move($1); }
 | name '[' ']' { $$.form = LValue::Form::List; $$.name = std::move($1); }
-| name '(' ')' { $$.form = LValue::Form::List; $$.name = std::move($1); }
+| name '(' ')' {
+    $$.form = LValue::Form::List; $$.parenthesized = true; $$.name = std::move($1); }
 | name '[' expr ']' {
     $$.form = LValue::Form::Element; $$.name = std::move($1); $$.index = std::move($3); }
 | name '(' expr ')' {
-    $$.form = LValue::Form::Element; $$.name = std::move($1); $$.index = std::move($3); }
+    $$.form = LValue::Form::Element; $$.parenthesized = true; $$.name = std::move($1);
+    $$.index = std::move($3); }
 ;
 
 option_path:

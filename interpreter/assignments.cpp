@@ -2,7 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "grammar/keywords.h"
 #include "interpreter/script_interpreter.h"
+#include "stdlib/edit_distance.h"
 
 namespace geomesh {
 
@@ -26,6 +28,12 @@ void removeValues(std::vector<double>& list, const std::vector<double>& values) 
   }
 }
 
+// A number becomes a list of one number, in place (no copy of long lists).
+void makeList(Value& value) {
+  if (value.kind() == Value::Kind::Number) value = Value::list(std::move(value.numbers()));
+  if (value.kind() == Value::Kind::String) value = Value::stringList(std::move(value.strings()));
+}
+
 Value asList(const Value& value) {
   if (value.kind() == Value::Kind::Number) return Value::list(value.numbers());
   if (value.kind() == Value::Kind::String) return Value::stringList(value.strings());
@@ -38,13 +46,13 @@ void Interpreter::executeAssign(const ast::AssignStmt& assign, const SourceLocat
   const std::string name = resolveName(assign.target.name);
   const std::string& op = assign.op;
   if (op == "++" || op == "--") {
-    const Value& old = requireVariable(name, where);
-    if (!old.isNumeric()) fail(where, "'" + name + "' is " + old.describe() + ", not a number");
-    Value updated = old;
+    Value& updated = requireVariable(name, where);
+    if (!updated.isNumeric())
+      fail(where, "'" + name + "' is " + updated.describe() + ", not a number");
     for (double& x : updated.numbers()) x = combine(x, 1, op);
-    variables_[name] = std::move(updated);
     return;
   }
+  if (assign.target.parenthesized && !variables_.contains(name)) rejectMisspelledCommand(name, where);
   Value value = evaluate(*assign.value);
   if (assign.target.form == ast::LValue::Form::Element) {
     assignElements(assign.target, name, value, op, where);
@@ -60,18 +68,18 @@ void Interpreter::executeAssign(const ast::AssignStmt& assign, const SourceLocat
     variables_[name] = op == "+=" ? asList(value) : Value::list({});
     return;
   }
-  Value updated = requireVariable(name, where);
+  Value& updated = requireVariable(name, where);
   if (updated.isText() || value.isText()) {
     if (op != "+=" || !updated.isText() || !value.isText())
       fail(where, "'" + op + "' cannot combine " + std::string(updated.describe()) + " and " +
                       value.describe());
-    updated = asList(updated);
+    makeList(updated);
     for (const auto& s : value.strings()) updated.strings().push_back(s);
   } else if (listForm && op == "+=") {
-    updated = asList(updated);
+    makeList(updated);
     for (double x : value.numbers()) updated.numbers().push_back(x);
   } else if (listForm && op == "-=") {
-    updated = asList(updated);
+    makeList(updated);
     removeValues(updated.numbers(), value.numbers());
   } else {
     if (value.numbers().size() != 1)
@@ -79,7 +87,15 @@ void Interpreter::executeAssign(const ast::AssignStmt& assign, const SourceLocat
                                   value.describe());
     for (double& x : updated.numbers()) x = combine(x, value.numbers()[0], op);
   }
-  variables_[name] = std::move(updated);
+}
+
+// `Pont(1) = {0, 0, 0};` reads as the old list syntax `Pont[1] = ...`: when the name is no
+// variable yet and looks like a command keyword, it is far more likely a typo.
+void Interpreter::rejectMisspelledCommand(const std::string& name, const SourceLocation& where) {
+  std::vector<std::string> keywords(commandWords().begin(), commandWords().end());
+  auto close = closestNames(name, keywords, 1);
+  if (!close.empty())
+    fail(where, "unknown command '" + name + "'; did you mean '" + close.front() + "'?");
 }
 
 void Interpreter::assignElements(const ast::LValue& target, const std::string& name,
@@ -87,9 +103,10 @@ void Interpreter::assignElements(const ast::LValue& target, const std::string& n
                                  const SourceLocation& where) {
   std::vector<double> indices = evaluateNumbers(*target.index);
   auto existing = variables_.find(name);
-  Value list = existing == variables_.end()
-                   ? (value.isText() ? Value::stringList({}) : Value::list({}))
-                   : asList(existing->second);
+  if (existing == variables_.end())
+    existing = variables_.emplace(name, value.isText() ? Value::stringList({}) : Value::list({})).first;
+  Value& list = existing->second;
+  makeList(list);
   if (list.isText() != value.isText())
     fail(where, "cannot store " + std::string(value.describe()) + " in '" + name + "', which is " +
                     list.describe());
@@ -111,7 +128,6 @@ void Interpreter::assignElements(const ast::LValue& target, const std::string& n
       list.numbers()[index] = combine(list.numbers()[index], value.numbers()[from], op);
     }
   }
-  variables_[name] = std::move(list);
 }
 
 }  // namespace geomesh

@@ -103,9 +103,10 @@ void Interpreter::executeSetter(const ast::CommandStmt& command, const SourceLoc
   const std::string key = evaluateString(*command.args[0]);
   if (head == "SetNumber") {
     const double value = evaluateNumber(*command.args[1]);
-    if (session_.options().hasNumber(key))
+    if (session_.options().hasNumber(key)) {
       session_.options().setNumber(key, value);
-    else
+      optionChanged(session_.options().find(key)->name);
+    } else
       parameterNumbers_[key] = value;
     return;
   }
@@ -148,6 +149,13 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
   else if (xs.size() != 1)
     fail(rhs.loc, "option '" + assign.path + "' takes a single number");
   options.setNumber(assign.path, combine(options.number(assign.path), number, assign.op));
+  optionChanged(option->name);
+}
+
+// Options the geometry kernel reads while entities are defined take effect at once.
+void Interpreter::optionChanged(const std::string& name) {
+  if (name == "Geometry.Tolerance")
+    session_.geo().setTolerance(session_.options().number("Geometry.Tolerance"));
 }
 
 Value Interpreter::optionValue(const ast::Expr& expr) {

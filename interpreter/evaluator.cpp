@@ -85,7 +85,7 @@ std::string Interpreter::resolveName(const ast::Name& name) {
   return result;
 }
 
-const Value& Interpreter::requireVariable(const std::string& name, const SourceLocation& where) {
+Value& Interpreter::requireVariable(const std::string& name, const SourceLocation& where) {
   auto it = variables_.find(name);
   if (it != variables_.end()) return it->second;
   std::vector<std::string> known;
@@ -103,8 +103,10 @@ Value Interpreter::variableValue(const Expr& expr) {
 
 Value Interpreter::elementValue(const Expr& expr) {
   const std::string name = resolveName(expr.name);
-  const Value list = requireVariable(name, expr.loc);
   const Value index = evaluate(*expr.args[0]);
+  // A reference, not a copy: reading one item of a long list stays cheap. Evaluating the
+  // index above cannot change variables, and map references survive insertions anyway.
+  const Value& list = requireVariable(name, expr.loc);
   if (!index.isNumeric()) fail(expr.args[0]->loc, "an index must be a number");
   std::vector<double> numbers;
   std::vector<std::string> strings;

@@ -201,9 +201,12 @@ void Interpreter::fail(const SourceLocation& where, const std::string& message) 
   throw ScriptError(where, message, line);
 }
 
+// Each place warns once, even inside a loop or a macro called many times.
 void Interpreter::warn(const SourceLocation& where, const std::string& message) const {
-  session_.log().warning(where.file + ":" + std::to_string(where.line) + ":" +
-                         std::to_string(where.column) + ": warning: " + message);
+  std::string text = where.file + ":" + std::to_string(where.line) + ":" +
+                     std::to_string(where.column) + ": warning: " + message;
+  if (!warned_.insert(text).second) return;
+  session_.log().warning(text);
 }
 
 std::string Interpreter::didYouMean(std::string_view name,

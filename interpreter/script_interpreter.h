@@ -3,6 +3,7 @@
 #include <deque>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,7 @@ class Interpreter {
   void execute(const ast::StmtList& statements);
   void execute(const ast::Stmt& statement);
   void executeAssign(const ast::AssignStmt& assign, const SourceLocation& where);
+  void rejectMisspelledCommand(const std::string& name, const SourceLocation& where);
   void assignElements(const ast::LValue& target, const std::string& name, const Value& value,
                       const std::string& op, const SourceLocation& where);
   void executeFor(const ast::ForStmt& loop, const SourceLocation& where);
@@ -50,7 +52,7 @@ class Interpreter {
   std::vector<double> evaluateNumbers(const ast::ExprList& items);
   std::string resolveName(const ast::Name& name);
   Value variableValue(const ast::Expr& expr);
-  const Value& requireVariable(const std::string& name, const SourceLocation& where);
+  Value& requireVariable(const std::string& name, const SourceLocation& where);
   Value elementValue(const ast::Expr& expr);
   Value listValue(const ast::ExprList& items, const SourceLocation& where);
   std::vector<double> rangeValues(const ast::Expr& range);
@@ -75,6 +77,7 @@ class Interpreter {
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<int> entityTags(const ast::Expr& list);
+  void optionChanged(const std::string& name);
   void executeSetter(const ast::CommandStmt& command, const SourceLocation& where);
 
   // parameters (DefineConstant, DefineNumber, DefineString)
@@ -99,6 +102,7 @@ class Interpreter {
   std::vector<std::string> includeStack_;
   std::map<std::pair<int, std::string>, int> physicalNames_;  // (dim, name) -> tag
   int maxPhysicalTag_ = 0;
+  mutable std::set<std::string> warned_;
   int callDepth_ = 0;
   RandomEngine random_;
 };

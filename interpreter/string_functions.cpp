@@ -80,9 +80,14 @@ std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
     return Value::number(str(0).find(str(1)) != std::string::npos ? 1 : 0);
   }
   if (name == "StrCmp") {
+    // As C's strcmp: the difference of the first differing bytes (0 when equal).
     arity(2, 2);
-    int c = str(0).compare(str(1));
-    return Value::number(c < 0 ? -1 : (c > 0 ? 1 : 0));
+    const std::string a = str(0), b = str(1);
+    std::size_t i = 0;
+    while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+    const int left = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+    const int right = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+    return Value::number(left - right);
   }
   if (name == "StrChoice") {
     arity(3, 3);

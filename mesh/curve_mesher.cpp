@@ -148,6 +148,9 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
   const SizeIntegral integral(arc.length(), startSize, endSize, rules);
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
+  constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
+  if (integral.total() > kMaxSegments)
+    throw MeshError(id, "the mesh size asks for more than 1e9 segments");
   const int segments = segmentCount(integral.total(), turningAngle(g, range), closed);
 
   EntityMesh& em = mesh.entity(id);

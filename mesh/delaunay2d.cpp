@@ -49,6 +49,12 @@ std::uint32_t Triangulation2D::addPoint(Vec2 p) {
   return static_cast<std::uint32_t>(points_.size() - 1);
 }
 
+void Triangulation2D::removeLastPoint() {
+  if (points_.empty() || vertexTriangle_.back() != kNone) return;
+  points_.pop_back();
+  vertexTriangle_.pop_back();
+}
+
 std::uint32_t Triangulation2D::nextRandom() {
   random_ ^= random_ << 13;
   random_ ^= random_ >> 17;

@@ -31,6 +31,7 @@ class Triangulation2D {
   static constexpr std::uint32_t kFirstVertex = 3;  // vertices 0..2 are the enclosing ones
 
   std::uint32_t addPoint(Vec2 p);  // stores a point; insert() puts it in the triangulation
+  void removeLastPoint();          // forgets the last point stored, if it was not inserted
   std::size_t pointCount() const { return points_.size(); }
   std::size_t triangleCount() const { return vertex_.size() / 3; }
   Vec2 point(std::uint32_t v) const { return points_[v]; }
@@ -58,9 +59,9 @@ class Triangulation2D {
   InsertStatus insert(std::uint32_t v, std::uint32_t containing);
   // The same in two steps: findCavity() changes nothing, so the caller may look at the
   // boundary of the cavity, whose vertices become v's neighbours, before commitCavity() or
-  // giving up. With a
-  // metric frame, circumcircles are taken after mapping the points by it (an anisotropic
-  // Delaunay kernel, as for curved surfaces); Rejected if that cavity is not star-shaped.
+  // giving up. With a metric frame, circumcircles are taken after mapping the points by it
+  // (an anisotropic Delaunay kernel, for curved surfaces); Rejected if that cavity is not
+  // star-shaped around v.
   InsertStatus findCavity(std::uint32_t v, std::uint32_t containing,
                           const MetricFrame* metric = nullptr);
   struct CavityEdge {

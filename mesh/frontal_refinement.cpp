@@ -187,10 +187,11 @@ class FrontalRefiner {
     const double size = interpolatedSize(found, x);
     if (!(size > 0)) return false;
     const std::uint32_t v = tri_.addPoint(x);
+    if (!findCavity(v, found, x) || tooClose(tri_.cavityBoundary(), x, size)) {
+      tri_.removeLastPoint();
+      return false;
+    }
     sizes_.push_back(size);
-    // A point not inserted stays unused: no triangle refers to it.
-    if (!findCavity(v, found, x)) return false;
-    if (tooClose(tri_.cavityBoundary(), x, size)) return false;
     tri_.commitCavity(v);
     updateAfterInsertion();
     return true;

@@ -19,8 +19,7 @@ std::string entityName(EntityId e) {
   return std::string(name) + " " + std::to_string(e.tag);
 }
 
-// Reports "Meshing <dim>D... done (<seconds> s, <count> <elements>)" when it goes out of scope
-// normally.
+// Times one stage; done() reports "Meshing <dim>D... done (<seconds> s, <count> <elements>)".
 class StageTimer {
  public:
   explicit StageTimer(int dim) : dim_(dim), start_(std::chrono::steady_clock::now()) {}
@@ -50,7 +49,11 @@ void meshPoints(const Model& model, const SizeRules& rules, Mesh& mesh,
 }
 
 void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRules& rules,
-                  Mesh& mesh, std::vector<double>& nodeSizes) {
+                  Mesh& mesh, std::vector<double>& nodeSizes, MessageSink& log) {
+  constexpr int kFrontalDelaunay = 6;
+  if (options.algorithm2D != kFrontalDelaunay && !model.surfaces().empty())
+    log.warning("Mesh.Algorithm " + std::to_string(options.algorithm2D) +
+                " is not available: surfaces are meshed with Frontal-Delaunay (6)");
   for (const auto& [tag, surface] : model.surfaces())
     meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
@@ -76,7 +79,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   }
   if (dim >= 2) {
     const StageTimer timer(2);
-    meshSurfaces(model, options, rules, mesh, nodeSizes);
+    meshSurfaces(model, options, rules, mesh, nodeSizes, log);
     timer.done(log, mesh.elementCount(2), "triangles");
   }
   if (dim >= 3) {

@@ -12,9 +12,9 @@ namespace geomesh {
 // constrained Delaunay triangulation of the boundary nodes in the parameter plane, frontal-
 // Delaunay refinement to the target size (extended from the boundary nodes' sizes in
 // nodeSizes), then `smoothingPasses` passes of smoothing. Curved surfaces are refined in
-// their own metric (first fundamental form), planes in plain lengths. No boundary node is added; the
-// triangles are counter-clockwise in the surface's parametrization. Throws MeshError naming
-// the surface when its boundary cannot be triangulated.
+// their own metric (first fundamental form), planes in plain lengths. No boundary node is added;
+// the triangles are counter-clockwise in the surface's parametrization. Throws MeshError naming the
+// surface when its boundary cannot be triangulated.
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
                  int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes);
 

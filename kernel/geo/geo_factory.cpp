@@ -3,28 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 
-#include "kernel/geo/circle_arc_geometry.h"
-#include "kernel/geo/line_geometry.h"
-#include "kernel/geometry_error.h"
+#include "kernel/geo/geo_fail.h"
 #include "kernel/plane_geometry.h"
 
 namespace geomesh {
 
 namespace {
 
-template <class... Parts>
-[[noreturn]] void fail(const Parts&... parts) {
-  std::ostringstream out;
-  (out << ... << parts);
-  throw GeometryError(out.str());
-}
-
-template <class Map>
-void requireNew(const Map& map, int tag, const char* what) {
-  if (map.contains(tag)) fail(what, " ", tag, " already exists");
-}
+using geo_detail::fail;
+using geo_detail::requireNew;
 
 // The curves of a loop are reordered so that each one starts where the previous one ends; the
 // first curve stays first and no curve is reversed (a wrongly signed curve is an error).
@@ -73,25 +61,7 @@ void GeoFactory::addLine(int tag, int startPoint, int endPoint) {
     fail("Line ", tag, ": both ends are point ", startPoint);
   if (distance(points_.at(startPoint).xyz, points_.at(endPoint).xyz) <= absoluteTolerance())
     fail("Line ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
-  curves_[tag] = Curve{tag, startPoint, endPoint};
-}
-
-void GeoFactory::addCircleArc(int tag, int startPoint, int centerPoint, int endPoint) {
-  requireNew(curves_, tag, "Curve");
-  for (int p : {startPoint, centerPoint, endPoint})
-    if (!hasPoint(p)) fail("Circle ", tag, ": point ", p, " is not defined");
-  const Vec3 start = points_.at(startPoint).xyz, center = points_.at(centerPoint).xyz;
-  const Vec3 end = points_.at(endPoint).xyz;
-  const double r1 = distance(start, center), r2 = distance(end, center);
-  const double tolerance = absoluteTolerance();
-  if (r1 <= tolerance || r2 <= tolerance)
-    fail("Circle ", tag, ": its center, point ", centerPoint, ", is one of its ends");
-  if (distance(start, end) <= tolerance)
-    fail("Circle ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
-  if (std::abs(r1 - r2) > 0.1 * std::max(r1, r2))
-    fail("Circle ", tag, ": points ", startPoint, " and ", endPoint,
-         " are not on one circle around point ", centerPoint, " (radii ", r1, " and ", r2, ")");
-  curves_[tag] = Curve{tag, startPoint, endPoint, Curve::Kind::CircleArc, centerPoint};
+  curves_[tag] = Curve{tag, CurveKind::Line, {startPoint, endPoint}};
 }
 
 void GeoFactory::addCurveLoop(int tag, std::vector<int> curves) {
@@ -178,31 +148,7 @@ double GeoFactory::absoluteTolerance() const {
 
 std::array<int, 2> GeoFactory::curveEnds(int signedCurve) const {
   const Curve& c = curves_.at(std::abs(signedCurve));
-  return signedCurve > 0 ? std::array{c.start, c.end} : std::array{c.end, c.start};
-}
-
-namespace {
-
-// The axis an arc turns about: normal to its ends' radii, or for a half circle (where they are
-// opposite), the coordinate axis most normal to them, z first.
-Vec3 arcAxis(Vec3 center, Vec3 start, Vec3 end) {
-  const Vec3 v1 = start - center, v2 = end - center;
-  const Vec3 n = cross(v1, v2);
-  if (norm(n) > 1e-10 * norm(v1) * norm(v2)) return normalized(n);
-  const Vec3 e1 = normalized(v1);
-  Vec3 best{0, 0, 1};
-  for (Vec3 axis : {Vec3{0, 1, 0}, Vec3{1, 0, 0}})
-    if (std::abs(dot(axis, e1)) < std::abs(dot(best, e1)) - 1e-12) best = axis;
-  return normalized(best - dot(best, e1) * e1);
-}
-
-}  // namespace
-
-std::shared_ptr<const CurveGeometry> GeoFactory::curveGeometry(const Curve& c) const {
-  const Vec3 start = points_.at(c.start).xyz, end = points_.at(c.end).xyz;
-  if (c.kind == Curve::Kind::Line) return std::make_shared<LineGeometry>(start, end);
-  const Vec3 center = points_.at(c.center).xyz;
-  return std::make_shared<CircleArcGeometry>(center, start, end, arcAxis(center, start, end));
+  return signedCurve > 0 ? std::array{c.start(), c.end()} : std::array{c.end(), c.start()};
 }
 
 std::vector<Vec3> GeoFactory::loopSamples(int signedLoop) const {
@@ -211,7 +157,7 @@ std::vector<Vec3> GeoFactory::loopSamples(int signedLoop) const {
   for (int c : loopCurves(signedLoop)) {
     const Curve& curve = curves_.at(std::abs(c));
     samples.push_back(points_.at(curveEnds(c)[0]).xyz);
-    if (curve.kind == Curve::Kind::Line) continue;
+    if (curve.kind == CurveKind::Line) continue;
     const auto geometry = curveGeometry(curve);
     for (int i = 1; i < kArcSamples; ++i) {
       const double t = static_cast<double>(i) / kArcSamples;
@@ -264,7 +210,7 @@ void GeoFactory::synchronize(Model& model) const {
   model.clear();
   for (const auto& [tag, p] : points_) model.addPoint(p);
   for (const auto& [tag, c] : curves_)
-    model.addCurve(ModelCurve{tag, c.start, c.end, curveGeometry(c)});
+    model.addCurve(ModelCurve{tag, c.start(), c.end(), curveGeometry(c)});
   for (const auto& [tag, s] : surfaces_) {
     // Holes run against the direction they were given in, as the built-in kernel of Gmsh
     // lists them (whatever that direction was).
@@ -285,7 +231,8 @@ void GeoFactory::synchronize(Model& model) const {
   }
   for (const auto& [id, group] : physicals_) {
     PhysicalGroup kept = group;
-    std::erase_if(kept.entities, [&](int e) { return !model.contains({id.dim, std::abs(e)}); });
+    const int dim = id.dim;
+    std::erase_if(kept.entities, [&](int e) { return !model.contains({dim, std::abs(e)}); });
     model.addPhysicalGroup(std::move(kept));
   }
 }

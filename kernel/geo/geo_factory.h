@@ -22,6 +22,17 @@ class GeoFactory {
   // end}). The two ends must be at about the same distance from the center (within 10%, as the
   // built-in kernel allows; the radius then varies along the arc so that it joins both).
   void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint);
+  // An arc of ellipse (Ellipse(tag) = {start, center, majorAxisPoint, end}), less than half a
+  // turn; see makeEllipseArc.
+  void addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint, int endPoint);
+  // Spline(tag) = {..}: an interpolating spline through the points (closed when the first
+  // point is also the last).
+  void addSpline(int tag, const std::vector<int>& points);
+  // BSpline(tag) = {..}: a uniform cubic B-spline of these control points (clamped at its
+  // ends; periodic when the first point is also the last).
+  void addBSpline(int tag, const std::vector<int>& points);
+  // Bezier(tag) = {..}: a Bezier curve of these control points.
+  void addBezier(int tag, const std::vector<int>& points);
   // A closed chain of curves; signed tags (negative: reversed). Curves given in any order
   // and orientation are chained as the built-in kernel does; a loop that does not close
   // throws, naming the gap.
@@ -51,11 +62,15 @@ class GeoFactory {
   void clear();
 
  private:
+  enum class CurveKind { Line, CircleArc, EllipseArc, Spline, BSpline, Bezier };
   struct Curve {
     int tag;
-    int start, end;
-    enum class Kind { Line, CircleArc } kind = Kind::Line;
-    int center = 0;  // circle arcs
+    CurveKind kind = CurveKind::Line;
+    // Points defining the shape: both ends for a line, {start, center, end} for a circle arc,
+    // {start, center, major-axis point, end} for an ellipse arc, else the control points.
+    std::vector<int> points;
+    int start() const { return points.front(); }
+    int end() const { return points.back(); }
   };
   struct Surface {
     int tag;
@@ -79,6 +94,8 @@ class GeoFactory {
   double absoluteTolerance() const;
   std::array<int, 2> curveEnds(int signedCurve) const;
   std::shared_ptr<const CurveGeometry> curveGeometry(const Curve& c) const;
+  void addControlPointCurve(int tag, CurveKind kind, const std::vector<int>& points,
+                            const char* what);
   // Points along a loop, in its direction: each curve's start, and inner points of arcs.
   std::vector<Vec3> loopSamples(int signedLoop) const;
   std::vector<int> loopCurves(int signedLoop) const;

@@ -139,3 +139,67 @@ TEST_F(Cli, ExecutableExitStatus) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST_F(Cli, CheckAcceptsAWrittenMesh) {
+  fs::path geo = write("sq.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2", "-save_all", "-o", (dir_ / "sq.msh").string()}), 0);
+  EXPECT_EQ(run({(dir_ / "sq.msh").string(), "-check"}), 0) << err_.str();
+  EXPECT_NE(err_.str().find("no problem"), std::string::npos) << err_.str();
+}
+
+TEST_F(Cli, CheckReportsANonConformingMesh) {
+  // Edge 1-2 is shared by three triangles.
+  fs::path msh = write("bad.msh", R"($MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Entities
+0 0 1 0
+1 0 0 0 1 1 0 0 0
+$EndEntities
+$Nodes
+1 4 1 4
+2 1 0 4
+1
+2
+3
+4
+0 0 0
+1 0 0
+0 1 0
+1 -1 0
+$EndNodes
+$Elements
+1 3 1 3
+2 1 2 3
+1 1 2 3
+2 2 1 4
+3 1 2 4
+$EndElements
+)");
+  EXPECT_EQ(run({msh.string(), "-check"}), 1);
+  EXPECT_NE(err_.str().find("surface 1"), std::string::npos) << err_.str();
+}
+
+TEST_F(Cli, MalformedMeshFileIsAnErrorWithItsLine) {
+  fs::path msh = write("broken.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2\n");
+  EXPECT_EQ(run({msh.string(), "-check"}), 1);
+  EXPECT_NE(err_.str().find("broken.msh:"), std::string::npos) << err_.str();
+}
+
+TEST_F(Cli, ConvertsMsh41ToMsh22) {
+  fs::path geo = write("sq.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.msh").string()}), 0);
+  ASSERT_EQ(run({(dir_ / "sq.msh").string(), "-o", (dir_ / "sq22.msh").string(), "-format", "msh22"}), 0)
+      << err_.str();
+  std::ifstream in(dir_ / "sq22.msh");
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);
+  EXPECT_EQ(line, "2.2 0 8");
+}
+
+}  // namespace
+}  // namespace geomesh

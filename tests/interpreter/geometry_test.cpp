@@ -67,6 +67,12 @@ TEST(Geometry, KernelErrorsCarryTheStatementLocation) {
   EXPECT_NE(error.find('9'), std::string::npos) << error;
 }
 
+TEST(Geometry, MisspelledCommandIsNotTakenForAList) {
+  EXPECT_EQ(firstLineOf("Pont(1) = {0, 0, 0};"),
+            "test.geo:1:1: error: unknown command 'Pont'; did you mean 'Point'?");
+  EXPECT_EQ(printed("abc(1) = 5; Printf(\"%g\", abc[1]);"), "5\n");
+}
+
 TEST(Geometry, BadArgumentsAreErrors) {
   EXPECT_EQ(firstLineOf("Point(1) = {0, 0};"),
             "test.geo:1:12: error: Point takes {x, y, z} or {x, y, z, size}, not 2 values");

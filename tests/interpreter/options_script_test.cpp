@@ -15,6 +15,14 @@ TEST(ScriptOptions, SetAndReadIncludingOldNames) {
   EXPECT_EQ(run.session.meshOptions().sizeMax, 0.3);
 }
 
+TEST(ScriptOptions, GeometryToleranceReachesTheKernel) {
+  ScriptRun run;
+  run.run("Geometry.Tolerance = 1e-5;");
+  EXPECT_EQ(run.session.geo().tolerance(), 1e-5);
+  run.run("SetNumber(\"Geometry.Tolerance\", 1e-3);");
+  EXPECT_EQ(run.session.geo().tolerance(), 1e-3);
+}
+
 TEST(ScriptOptions, StringsAndColours) {
   ScriptRun run;
   run.run("Geometry.OCCTargetUnit = \"M\";\nGeneral.Color.Background = {255, 0, 0};\n"

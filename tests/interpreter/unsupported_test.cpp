@@ -76,6 +76,12 @@ TEST(Unsupported, WarningsNameTheStatement) {
   EXPECT_EQ(run.log.warnings[1].substr(0, 36), "test.geo:2:1: warning: 'Mesh' in a s");
 }
 
+TEST(Unsupported, AStatementInALoopWarnsOnce) {
+  ScriptRun run;
+  run.run("For i In {1:5}\n  Coherence;\nEndFor\n");
+  EXPECT_EQ(run.log.warnings.size(), 1u);
+}
+
 TEST(Unsupported, BuiltInFactoryIsAccepted) {
   ScriptRun run;
   run.run("SetFactory(\"Built-in\");\n");

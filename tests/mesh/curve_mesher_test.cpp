@@ -84,6 +84,15 @@ TEST(CurveMesher, SizesAreClampedThenScaled) {
   EXPECT_EQ(segmentsOfUnitLine(0.01, 0.1, clampedGrading), 17);
 }
 
+TEST(CurveMesher, AbsurdlySmallSizeIsAnErrorNotAnOverflow) {
+  try {
+    segmentsOfUnitLine(1e-12, 1e-12);
+    FAIL() << "expected MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_EQ(e.entity, (EntityId{1, 1}));
+  }
+}
+
 TEST(CurveMesher, IgnoringPointSizesLeavesOnlySizeMax) {
   MeshOptions ignore;
   ignore.sizeFromPoints = false;

@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "mesh/constrained_delaunay.h"
 #include "mesh/predicates.h"
+#include "mesh/spatial_sort.h"
 
 namespace geomesh {
 namespace {
@@ -125,6 +128,22 @@ TEST(ConstrainedDelaunay, RecoversSegmentsCrossingManyTriangles) {
     EXPECT_FALSE(tri2.hasEnclosingVertex(t));
   }
   EXPECT_NEAR(area, 9.0, 1e-12);
+}
+
+TEST(SpatialSort, IsADeterministicPermutationWithShortSteps) {
+  const std::vector<Vec2> points = randomPoints(20000, 13);
+  const std::vector<std::uint32_t> order = spatialOrder(points);
+  EXPECT_EQ(order, spatialOrder(points));
+  std::vector<std::uint32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::uint32_t k = 0; k < sorted.size(); ++k) ASSERT_EQ(sorted[k], k);
+  // Consecutive points are close on average (random order: about 1.04 on this square).
+  double walk = 0;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const Vec2 a = points[order[k - 1]], b = points[order[k]];
+    walk += std::hypot(a.u - b.u, a.v - b.v);
+  }
+  EXPECT_LT(walk / static_cast<double>(order.size()), 0.1);
 }
 
 TEST(Predicates, ExactNearDegenerateDecisions) {

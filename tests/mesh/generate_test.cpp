@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
+#include "kernel/plane_geometry.h"
 #include "mesh/mesh_check.h"
 #include "mesh_test_models.h"
 
@@ -56,6 +58,20 @@ TEST(GenerateMesh, StagesReportTheirTimeAndCounts) {
   EXPECT_TRUE(checkMesh(model, mesh).ok());
 }
 
+TEST(GenerateMesh, UnavailableSurfaceAlgorithmIsAWarning) {
+  const Model model = squareModel(0.1);
+  Mesh mesh;
+  RecordingSink log;
+  MeshOptions options;
+  options.algorithm2D = 8;
+  generateMesh(model, options, 2, mesh, log);
+  ASSERT_EQ(log.lines.size(), 3u);
+  EXPECT_EQ(log.lines[1],
+            "Mesh.Algorithm 8 is not available: surfaces are meshed with "
+            "Frontal-Delaunay (6)");
+  EXPECT_GT(mesh.elementCount(2), 0u);
+}
+
 TEST(GenerateMesh, ReplacesThePreviousMesh) {
   const Model model = squareModel(0.1);
   Mesh mesh;
@@ -96,6 +112,74 @@ TEST(GenerateMesh, SeveralSurfacesShareTheirCommonCurve) {
   const MeshCheckReport report = checkMesh(b.model, mesh);
   EXPECT_TRUE(report.ok()) << report.summary();
   EXPECT_NEAR(testing::meshArea(mesh, 1) + testing::meshArea(mesh, 2), 2.0, 1e-12);
+}
+
+// The unit cube: 8 points, 12 lines, 6 planes with outward normals, one volume.
+Model cubeModel(double h) {
+  Model model;
+  const Vec3 corners[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                           {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (int k = 0; k < 8; ++k) model.addPoint({k + 1, corners[k], h});
+  const int faces[6][4] = {{1, 4, 3, 2}, {5, 6, 7, 8}, {1, 2, 6, 5},
+                           {3, 4, 8, 7}, {1, 5, 8, 4}, {2, 3, 7, 6}};
+  std::map<std::pair<int, int>, int> lines;
+  auto line = [&](int a, int b) {
+    if (auto it = lines.find({b, a}); it != lines.end()) return -it->second;
+    const int tag = static_cast<int>(lines.size()) + 1;
+    lines[{a, b}] = tag;
+    model.addCurve(
+        {tag, a, b, std::make_shared<testing::SegmentGeometry>(corners[a - 1], corners[b - 1])});
+    return tag;
+  };
+  ModelVolume volume{1, {{}}};
+  for (int f = 0; f < 6; ++f) {
+    std::vector<Vec3> polygon;
+    std::vector<int> loop;
+    for (int k = 0; k < 4; ++k) {
+      polygon.push_back(corners[faces[f][k] - 1]);
+      loop.push_back(line(faces[f][k], faces[f][(k + 1) % 4]));
+    }
+    const PlaneFit fit = fitPlane(polygon);
+    auto plane = std::make_shared<PlaneGeometry>(fit.origin, fit.normal);
+    for (Vec3 p : polygon) plane->include(p);
+    model.addSurface({f + 1, {loop}, plane, {}, {}});
+    volume.shells[0].push_back(f + 1);
+  }
+  model.addVolume(volume);
+  return model;
+}
+
+TEST(GenerateMesh, CubeSurfacesFollowTheirLoopsAndTheVolumeIsFilled) {
+  const Model model = cubeModel(0.25);
+  Mesh mesh;
+  RecordingSink log;
+  generateMesh(model, {}, 3, mesh, log);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  ASSERT_EQ(log.lines.size(), 3u);
+  EXPECT_EQ(log.lines[2].rfind("Meshing 3D... done (", 0), 0u);
+  // Every face's triangles point out of the cube.
+  for (int f = 1; f <= 6; ++f) {
+    const ElementBlock* triangles = mesh.find({2, f})->findBlock(ElementType::Triangle3);
+    const Vec3 normal = cross(model.surface(f)->geometry->firstDerivatives({0, 0}).du,
+                              model.surface(f)->geometry->firstDerivatives({0, 0}).dv);
+    const Vec3 outward = model.surface(f)->geometry->point({0, 0}) - Vec3{0.5, 0.5, 0.5};
+    EXPECT_GT(dot(normal, outward), 0) << "face " << f;
+    for (std::size_t e = 0; e < triangles->size(); ++e) {
+      const auto n = triangles->element(e);
+      const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
+      ASSERT_GT(dot(cross(b - a, c - a), outward), 0) << "face " << f;
+    }
+  }
+  const ElementBlock* tets = mesh.find({3, 1})->findBlock(ElementType::Tet4);
+  ASSERT_NE(tets, nullptr);
+  double volume = 0;
+  for (std::size_t e = 0; e < tets->size(); ++e) {
+    const auto n = tets->element(e);
+    const Vec3 a = mesh.node(n[0]);
+    volume += dot(cross(mesh.node(n[1]) - a, mesh.node(n[2]) - a), mesh.node(n[3]) - a) / 6;
+  }
+  EXPECT_NEAR(volume, 1.0, 1e-9);
 }
 
 TEST(GenerateMesh, MissingGeometryIsAnErrorNamingTheEntity) {

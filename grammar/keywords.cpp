@@ -1,0 +1,45 @@
+#include "grammar/keywords.h"
+
+namespace geomesh {
+
+namespace {
+
+// Words that start or continue a command (statement heads and shape kinds).
+constexpr std::string_view kCommandWords[] = {
+    "Abort", "AdaptMesh", "Affine", "BSpline", "Background", "Bezier", "Block", "BooleanDifference",
+    "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
+    "Chamfer", "Characteristic", "Circle", "ClassifySurfaces", "Closest", "Coherence", "Cohomology",
+    "Color", "CombinedBoundary", "Compound", "Cone", "CreateGeometry", "CreateTopology", "Curve",
+    "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Error", "Exit",
+    "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide",
+    "Homology", "Include", "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm",
+    "MeshSize", "NewModel", "NonBlockingSystem", "OptimizeMesh", "PartitionMesh", "Periodic",
+    "Physical", "Physicals", "Plane", "Point", "PointsOf", "PostProcessing", "Print", "Printf",
+    "QuadTriAddVerts", "QuadTriNoNewVerts", "Recombine", "Rectangle", "Recursive", "RefineMesh",
+    "RelocateMesh", "RenumberMeshElements", "RenumberMeshNodes", "ReorientMesh", "Reverse",
+    "Rotate", "Ruled", "Save", "SetChanged", "SetFactory", "SetNumber", "SetOrder", "SetString",
+    "ShapeFromFile", "Show", "Sleep", "Smoother", "Solver", "Sphere", "Spline", "Surface",
+    "Symmetry", "SyncModel", "System", "ThruSections", "Torus", "Transfinite", "Translate", "View",
+    "Volume", "Warning", "Wedge", "Wire",
+};
+
+// Words that only appear after a shape: Point{1} In Surface{2}; ... Using Progression 2;
+constexpr std::string_view kTailWords[] = {
+    "AlternateLeft", "AlternateRight", "Alternated", "Beta", "Bump", "Left", "Progression",
+    "Right", "Using",
+};
+
+// Attribute names inside DefineConstant[...] / DefineNumber[...] / DefineString[...].
+constexpr std::string_view kAttributeNames[] = {
+    "AutoCheck", "ChangedValue", "Choices", "Closed", "Graph", "GmshOption", "Help",
+    "Highlight", "Kind", "Label", "Loop", "Max", "Min", "Name", "NeverChanged", "Path",
+    "ReadOnly", "ReadOnlyRange", "ServerAction", "Step", "Units", "Visible",
+};
+
+}  // namespace
+
+std::span<const std::string_view> commandWords() { return kCommandWords; }
+std::span<const std::string_view> tailWords() { return kTailWords; }
+std::span<const std::string_view> attributeNames() { return kAttributeNames; }
+
+}  // namespace geomesh
