@@ -2,6 +2,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "grammar/parser.hpp"
 
@@ -23,16 +24,25 @@ class Lexer {
   const std::string& currentText() const { return currentText_; }
   const std::string& fileName() const { return fileName_; }
 
+  // A bracket or block (For, If, Macro) not closed yet, where it was opened.
+  struct OpenToken {
+    std::string text;
+    Parser::location_type where;
+  };
+  // The innermost one, or null when everything is closed.
+  const OpenToken* innermostOpen() const { return open_.empty() ? nullptr : &open_.back(); }
+
  private:
   Parser::symbol_type scan();
   Parser::symbol_type word(std::string text, const Parser::location_type& where);
   Parser::symbol_type number(const Parser::location_type& where);
   Parser::symbol_type quoted(const Parser::location_type& where);
   Parser::symbol_type punctuation(int token, const Parser::location_type& where);
-  Parser::symbol_type opening(Parser::symbol_type symbol);
+  Parser::symbol_type opening(Parser::symbol_type symbol, std::string text);
   Parser::symbol_type closing(Parser::symbol_type symbol);
   void skipBlockComment(const Parser::location_type& where);
   bool nextNonSpaceIs(char c) const;
+  bool followedByWord(std::string_view word);
   void countLines(const char* from, const char* to);
   Parser::location_type tokenLocation() const;
   [[noreturn]] void fail(const Parser::location_type& where, const std::string& message) const;
@@ -47,7 +57,7 @@ class Lexer {
   bool afterDot_ = false;
   bool defineAhead_ = false;
   int defineDepth_ = 0;
-  int nesting_ = 0;  // open brackets and blocks (For, If, Macro)
+  std::vector<OpenToken> open_;  // open brackets and blocks, innermost last
   std::string currentText_, previousText_;
   Parser::location_type currentLocation_, previousLocation_;
 };

@@ -3,6 +3,7 @@
 #include "grammar/keywords.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <span>
 #include <string_view>
@@ -50,6 +51,18 @@ void Lexer::countLines(const char* from, const char* to) {
   }
 }
 
+// "Using Wire" is read as one token: Extrude{..} Using Wire{..} needs no semicolon after it.
+bool Lexer::followedByWord(std::string_view word) {
+  const char* p = cursor_;
+  while (p < limit_ && (*p == ' ' || *p == '\t')) ++p;
+  const auto rest = static_cast<std::size_t>(limit_ - p);
+  if (rest < word.size() || std::string_view(p, word.size()) != word) return false;
+  const char* end = p + word.size();
+  if (end < limit_ && (std::isalnum(static_cast<unsigned char>(*end)) || *end == '_')) return false;
+  cursor_ = end;
+  return true;
+}
+
 bool Lexer::nextNonSpaceIs(char c) const {
   const char* p = cursor_;
   while (p < limit_ && (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')) ++p;
@@ -72,14 +85,14 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
     afterDot_ = false;
     return Parser::make_IDENT(std::move(text), where);
   }
-  if (text == "For") return opening(Parser::make_FOR(where));
+  if (text == "For") return opening(Parser::make_FOR(where), text);
   if (text == "EndFor") return closing(Parser::make_ENDFOR(where));
   if (text == "In") return Parser::make_IN(where);
-  if (text == "If") return opening(Parser::make_IF(where));
+  if (text == "If") return opening(Parser::make_IF(where), text);
   if (text == "ElseIf") return Parser::make_ELSEIF(where);
   if (text == "Else") return Parser::make_ELSE(where);
   if (text == "EndIf") return closing(Parser::make_ENDIF(where));
-  if (text == "Macro" || text == "Function") return opening(Parser::make_MACRO(where));
+  if (text == "Macro" || text == "Function") return opening(Parser::make_MACRO(where), text);
   if (text == "Return") return closing(Parser::make_RETURN(where));
   if (text == "Call") return Parser::make_CALL(where);
   if (text == "Plugin") return Parser::make_PLUGIN(where);
@@ -92,6 +105,7 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
   if (defineDepth_ > 0 && contains(attributeNames(), text) && !nextNonSpaceIs('('))
     return Parser::make_ATTR(std::move(text), where);
   if (contains(commandWords(), text)) return Parser::make_WORD(std::move(text), where);
+  if (text == "Using" && followedByWord("Wire")) return Parser::make_USINGWIRE(where);
   if (contains(tailWords(), text)) return Parser::make_TAILWORD(std::move(text), where);
   return Parser::make_IDENT(std::move(text), where);
 }
@@ -102,7 +116,8 @@ Parser::symbol_type Lexer::number(const Parser::location_type& where) {
                   'e');
   double value = 0;
   auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (error == std::errc::result_out_of_range) fail(where, "number '" + digits + "' is out of range");
+  if (error == std::errc::result_out_of_range)
+    fail(where, "number '" + digits + "' is out of range");
   if (error != std::errc() || end != digits.data() + digits.size())
     fail(where, "malformed number '" + digits + "'");
   return Parser::make_NUMBER(value, where);
@@ -123,14 +138,15 @@ Parser::symbol_type Lexer::quoted(const Parser::location_type& where) {
 // bound keeps hostile inputs from exhausting the stack.
 constexpr int kMaxNesting = 256;
 
-Parser::symbol_type Lexer::opening(Parser::symbol_type symbol) {
-  if (++nesting_ > kMaxNesting)
+Parser::symbol_type Lexer::opening(Parser::symbol_type symbol, std::string text) {
+  if (open_.size() >= kMaxNesting)
     fail(symbol.location, "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
+  open_.push_back({std::move(text), symbol.location});
   return symbol;
 }
 
 Parser::symbol_type Lexer::closing(Parser::symbol_type symbol) {
-  if (nesting_ > 0) --nesting_;
+  if (!open_.empty()) open_.pop_back();
   return symbol;
 }
 
@@ -142,8 +158,10 @@ Parser::symbol_type Lexer::punctuation(int token, const Parser::location_type& w
     --defineDepth_;
   }
   defineAhead_ = false;
-  if (token == '(' || token == '[' || token == '{') return opening(Parser::symbol_type(token, where));
-  if (token == ')' || token == ']' || token == '}') return closing(Parser::symbol_type(token, where));
+  if (token == '(' || token == '[' || token == '{')
+    return opening(Parser::symbol_type(token, where), std::string(1, static_cast<char>(token)));
+  if (token == ')' || token == ']' || token == '}')
+    return closing(Parser::symbol_type(token, where));
   return Parser::symbol_type(token, where);
 }
 
@@ -199,7 +217,9 @@ Parser::symbol_type Lexer::scan() {
       "*=" { return Parser::make_TIMESEQ(tokenLocation()); }
       "/=" { return Parser::make_DIVEQ(tokenLocation()); }
       ">>" { return Parser::make_APPEND(tokenLocation()); }
-      [-+*/%^()[\]{},;=<>!?:.#~] { return punctuation(static_cast<unsigned char>(*token_), tokenLocation()); }
+      [-+*/%^()[\]{},;=<>!?:.#~] {
+        return punctuation(static_cast<unsigned char>(*token_), tokenLocation());
+      }
       * { fail(tokenLocation(), std::string("unexpected character '") + *token_ + "'"); }
     */
   }

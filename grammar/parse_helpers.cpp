@@ -1,6 +1,7 @@
 #include "grammar/parse_helpers.h"
 
 #include <algorithm>
+#include <map>
 
 #include "grammar/lexer.h"
 
@@ -116,6 +117,20 @@ std::string listed(const std::vector<std::string>& names) {
   return text;
 }
 
+// At the end of the file, what is missing is the closing of the innermost open bracket or
+// block: point at where it was opened, which may be far above the end.
+void reportUnclosed(const Lexer& lexer) {
+  const Lexer::OpenToken* open = lexer.innermostOpen();
+  if (!open) return;
+  static const std::map<std::string, std::string> closers = {
+      {"For", "EndFor"}, {"If", "EndIf"}, {"Macro", "Return"}, {"Function", "Return"},
+      {"(", ")"},        {"[", "]"},      {"{", "}"}};
+  auto it = closers.find(open->text);
+  const std::string closer = it == closers.end() ? "its end" : "'" + it->second + "'";
+  throw SyntaxError(at(open->where), "'" + open->text + "' is never closed: " + closer +
+                                         " expected before the end of the file");
+}
+
 }  // namespace
 
 void reportSyntaxError(const Lexer& lexer, const Parser::context& context) {
@@ -129,10 +144,7 @@ void reportSyntaxError(const Lexer& lexer, const Parser::context& context) {
   if (contains(expected, "';'") && !atStatementStart && !lexer.previousText().empty())
     throw SyntaxError(endOf(lexer.previousLocation()),
                       "expected ';' after '" + lexer.previousText() + "' (found " + found + ")");
-  for (std::string_view closer : {"'EndFor'", "'EndIf'", "'Return'"})
-    if (atEnd && contains(expected, closer))
-      throw SyntaxError(at(context.location()),
-                        "unexpected end of file, expected " + std::string(closer));
+  if (atEnd) reportUnclosed(lexer);
   std::vector<std::string> useful;
   for (const auto& name : expected)
     if (!continuesExpression(name)) useful.push_back(name);

@@ -38,7 +38,7 @@ using geomesh::grammar::unary;
 %token <std::string> STRING "string" IDENT "identifier" WORD "keyword"
 %token <std::string> TAILWORD "modifier" ATTR "attribute"
 %token FOR "For" ENDFOR "EndFor" IN "In" IF "If" ELSEIF "ElseIf" ELSE "Else" ENDIF "EndIf"
-%token MACRO "Macro" RETURN "Return" CALL "Call" PLUGIN "Plugin"
+%token MACRO "Macro" RETURN "Return" CALL "Call" PLUGIN "Plugin" USINGWIRE "Using Wire"
 %token DEFINECONSTANT "DefineConstant" DEFINENUMBER "DefineNumber" DEFINESTRING "DefineString"
 %token EQ "==" NE "!=" LE "<=" GE ">=" AND "&&" OR "||" INCR "++" DECR "--"
 %token PLUSEQ "+=" MINUSEQ "-=" TIMESEQ "*=" DIVEQ "/=" APPEND ">>"
@@ -126,7 +126,10 @@ option_path:
 | option_path '.' IDENT { $$ = std::move($1); $$->text += "." + $3; }
 ;
 
-words: WORD { $$.push_back(std::move($1)); } | words WORD { $$ = std::move($1); $$.push_back(std::move($2)); } ;
+words:
+  WORD { $$.push_back(std::move($1)); }
+| words WORD { $$ = std::move($1); $$.push_back(std::move($2)); }
+;
 
 command:
   words ';' { CommandStmt c; c.words = std::move($1); $$ = makeStmt(std::move(c), @1); }
@@ -178,6 +181,11 @@ command:
     auto s = makeExpr(ExprKind::Shape, @1); s->words = c.words; s->parts = std::move($3);
     c.shape = std::move(s); $$ = makeStmt(std::move(c), @1); }
 | shape { $$ = grammar::shapeCommand(std::move($1), @1); }
+| shape USINGWIRE part {
+    $$ = grammar::shapeCommand(std::move($1), @1);
+    auto wire = makeExpr(ExprKind::Shape, @2); wire->words = {"Wire"};
+    wire->parts.push_back(std::move($3));
+    std::get<CommandStmt>($$->node).tail.push_back(TailItem{"Using", std::move(wire)}); }
 | shape tail ';' {
     $$ = grammar::shapeCommand(std::move($1), @1);
     std::get<CommandStmt>($$->node).tail = std::move($2); }

@@ -52,7 +52,9 @@ void Interpreter::executeAssign(const ast::AssignStmt& assign, const SourceLocat
     for (double& x : updated.numbers()) x = combine(x, 1, op);
     return;
   }
-  if (assign.target.parenthesized && !variables_.contains(name)) rejectMisspelledCommand(name, where);
+  if (assign.target.parenthesized && assign.target.form == ast::LValue::Form::Element &&
+      assign.value->kind == ast::ExprKind::List && !variables_.contains(name))
+    rejectMisspelledCommand(name, where);
   Value value = evaluate(*assign.value);
   if (assign.target.form == ast::LValue::Form::Element) {
     assignElements(assign.target, name, value, op, where);
@@ -94,7 +96,7 @@ void Interpreter::executeAssign(const ast::AssignStmt& assign, const SourceLocat
 void Interpreter::rejectMisspelledCommand(const std::string& name, const SourceLocation& where) {
   std::vector<std::string> keywords(commandWords().begin(), commandWords().end());
   auto close = closestNames(name, keywords, 1);
-  if (!close.empty())
+  if (!close.empty() && close.front().front() == name.front())
     fail(where, "unknown command '" + name + "'; did you mean '" + close.front() + "'?");
 }
 
@@ -104,7 +106,8 @@ void Interpreter::assignElements(const ast::LValue& target, const std::string& n
   std::vector<double> indices = evaluateNumbers(*target.index);
   auto existing = variables_.find(name);
   if (existing == variables_.end())
-    existing = variables_.emplace(name, value.isText() ? Value::stringList({}) : Value::list({})).first;
+    existing =
+        variables_.emplace(name, value.isText() ? Value::stringList({}) : Value::list({})).first;
   Value& list = existing->second;
   makeList(list);
   if (list.isText() != value.isText())

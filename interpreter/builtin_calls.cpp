@@ -18,7 +18,8 @@ namespace geomesh {
 namespace {
 
 constexpr std::string_view kFunctionNames[] = {
-    "AbsolutePath", "DirName", "Exists", "FileExists", "Find", "ListFromFile", "GetEnv", "GetNumber", "GetString",
+    "AbsolutePath", "DirName", "Exists", "FileExists", "Find", "ListFromFile", "GetEnv",
+    "GetNumber", "GetString",
     "GetValue", "LinSpace", "LogSpace", "LowerCase", "NameToString", "Sprintf", "Str", "StrCat",
     "StrChoice", "StrCmp", "StrFind", "StrLen", "StrPrefix", "StrRelative", "StrReplace",
     "StrSub", "Unique", "UpperCase", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Atan2",
@@ -52,7 +53,8 @@ Value Interpreter::callFunction(const ast::Expr& call) {
   // The old list syntax: a() is the whole list a[], a(i) its item a[i].
   if (auto it = variables_.find(name); it != variables_.end() && call.args.size() <= 1) {
     const Value& list = it->second;
-    if (call.args.empty()) return list.isText() ? Value::stringList(list.strings()) : Value::list(list.numbers());
+    if (call.args.empty())
+      return list.isText() ? Value::stringList(list.strings()) : Value::list(list.numbers());
     const double index = evaluateNumber(*call.args[0]);
     if (index < 0 || static_cast<std::size_t>(index) >= list.size())
       fail(call.args[0]->loc, "index " + std::to_string(static_cast<long long>(index)) +
@@ -107,7 +109,8 @@ std::optional<Value> Interpreter::callListFunction(const ast::Expr& call) {
     if (!in) fail(call.args[0]->loc, "cannot open '" + path.string() + "'");
     std::vector<double> values;
     for (double x; in >> x;) values.push_back(x);
-    if (!in.eof()) fail(call.args[0]->loc, "'" + path.string() + "' holds something other than numbers");
+    if (!in.eof())
+      fail(call.args[0]->loc, "'" + path.string() + "' holds something other than numbers");
     return Value::list(std::move(values));
   }
   if (name == "Unique") {
@@ -137,14 +140,16 @@ std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
   if (name == "GetNumber" || name == "GetValue") {
     if (args.empty() || args.size() > 2) fail(call.loc, "'" + name + "' takes 1 or 2 arguments");
     const std::string key = evaluateString(*args[0]);
-    if (auto it = parameterNumbers_.find(key); it != parameterNumbers_.end()) return Value::number(it->second);
+    if (auto it = parameterNumbers_.find(key); it != parameterNumbers_.end())
+      return Value::number(it->second);
     if (session_.options().hasNumber(key)) return Value::number(session_.options().number(key));
     return Value::number(args.size() > 1 ? evaluateNumber(*args[1]) : 0);
   }
   if (name == "GetString") {
     if (args.empty() || args.size() > 2) fail(call.loc, "GetString takes 1 or 2 arguments");
     const std::string key = evaluateString(*args[0]);
-    if (auto it = parameterStrings_.find(key); it != parameterStrings_.end()) return Value::string(it->second);
+    if (auto it = parameterStrings_.find(key); it != parameterStrings_.end())
+      return Value::string(it->second);
     if (session_.options().hasString(key)) return Value::string(session_.options().string(key));
     return Value::string(args.size() > 1 ? evaluateString(*args[1]) : "");
   }
@@ -162,7 +167,8 @@ std::optional<Value> Interpreter::builtinConstant(std::string_view name) {
   if (name == "Memory") return Value::number(processMemoryMegabytes());
   if (name == "TotalMemory") return Value::number(totalMemoryMegabytes());
   GeoFactory& geo = session_.geo();
-  int region = maxPhysicalTag_;
+  int region = 0;
+  for (const auto& [id, group] : geo.physicalGroups()) region = std::max(region, id.tag);
   for (int kind : {1, 2, 3, int(GeoFactory::kCurveLoop), int(GeoFactory::kSurfaceLoop)})
     region = std::max(region, geo.maxTag(kind));
   const bool oldNewReg = session_.options().number("Geometry.OldNewReg") != 0;

@@ -35,6 +35,13 @@ bool isInterfaceOnly(const std::string& word) {
   return false;
 }
 
+// Options of post-processing, printing and solvers: they change nothing in a batch mesh run.
+bool isInterfaceOption(std::string_view path) {
+  for (std::string_view category : {"View.", "Print.", "PostProcessing.", "Solver."})
+    if (path.starts_with(category)) return true;
+  return false;
+}
+
 bool isOptionCategory(std::string_view path) {
   return path.starts_with("General.") || path.starts_with("Geometry.") ||
          path.starts_with("Mesh.");
@@ -65,6 +72,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
   }
   if (head == "SetNumber" || head == "SetString") return executeSetter(command, where);
   if (executeGeometry(command, where)) return;
+  if (executeShapeCommand(command, where)) return;
   if (isInterfaceOnly(head)) {
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": '" +
                          joined(command.words) + "' has no effect in batch mode");
@@ -119,15 +127,24 @@ void Interpreter::executeSetter(const ast::CommandStmt& command, const SourceLoc
 
 void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
                                       const SourceLocation& where) {
+  if (isInterfaceOption(assign.path)) {
+    session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
+                         assign.path + "' has no effect in batch mode");
+    return;
+  }
   if (!isOptionCategory(assign.path) || assign.index) {
     warn(where, "option '" + assign.path + "' is not supported yet; ignored");
     return;
   }
   OptionRegistry& options = session_.options();
   const auto* option = options.find(assign.path);
-  if (!option)
-    fail(where, "unknown option '" + assign.path + "'" +
+  if (!option) {
+    // Setting an option that does not exist changes nothing: warn and go on, as scripts
+    // written for other versions set options this one does not know.
+    warn(where, "unknown option '" + assign.path + "'; ignored" +
                     didYouMean(assign.path, options.suggestions(assign.path)));
+    return;
+  }
   const ast::Expr& rhs = *assign.value;
   if (option->type == OptionType::Color && rhs.kind == ast::ExprKind::Variable &&
       !variables_.contains(rhs.name.base)) {

@@ -32,7 +32,8 @@ std::string joined(const Words& words) {
 std::vector<int> Interpreter::entityTags(const ast::Expr& list) {
   std::vector<int> tags;
   for (double x : evaluateNumbers(list)) {
-    if (x != std::floor(x)) fail(list.loc, "entity tag " + std::to_string(x) + " is not an integer");
+    if (x != std::floor(x))
+      fail(list.loc, "entity tag " + std::to_string(x) + " is not an integer");
     tags.push_back(static_cast<int>(x));
   }
   return tags;
@@ -55,36 +56,51 @@ bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceL
     definePhysical(command, physical, where);
     return true;
   }
-  if (w == Words{"Circle"} && command.op == "=") return defineCircleArc(command, where);
-  const bool known = w == Words{"Point"} || w == Words{"Line"} || w == Words{"Curve", "Loop"} ||
-                     w == Words{"Line", "Loop"} || w == Words{"Plane", "Surface"} ||
-                     w == Words{"Surface", "Loop"} || w == Words{"Volume"};
-  if (!known || command.op != "=") return false;
+  if (command.op != "=") return false;
+  if (w == Words{"Circle"}) return defineCircleArc(command, where);
+  if (w == Words{"Point"}) {
+    definePoint(command, where);
+    return true;
+  }
+  const bool known =
+      w == Words{"Line"} || w == Words{"Curve", "Loop"} || w == Words{"Line", "Loop"} ||
+      w == Words{"Plane", "Surface"} || w == Words{"Surface", "Loop"} || w == Words{"Volume"} ||
+      w == Words{"Ellipse"} || w == Words{"Spline"} || w == Words{"BSpline"} ||
+      w == Words{"Bezier"} || w == Words{"Surface"} || w == Words{"Ruled", "Surface"};
+  if (!known) return false;
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
-  std::vector<int> tags;
+  const std::vector<int> tags = entityTags(value);
+  GeoFactory& geo = session_.geo();
+  auto requireCount = [&](std::size_t count, const char* what) {
+    if (tags.size() != count)
+      fail(value.loc, joined(w) + " takes " + what + ", not " + std::to_string(tags.size()) +
+                          " values");
+  };
   try {
-    if (w == Words{"Point"}) {
-      std::vector<double> xs = evaluateNumbers(value);
-      if (xs.size() != 3 && xs.size() != 4)
-        fail(value.loc, "Point takes {x, y, z} or {x, y, z, size}, not " +
-                            std::to_string(xs.size()) + " values");
-      session_.geo().addPoint(tag, Vec3{xs[0], xs[1], xs[2]}, xs.size() == 4 ? xs[3] : 0.0);
-      return true;
-    }
-    tags = entityTags(value);
     if (w == Words{"Line"}) {
-      if (tags.size() != 2)
-        fail(value.loc, "Line takes 2 points, not " + std::to_string(tags.size()));
-      session_.geo().addLine(tag, tags[0], tags[1]);
-    } else if (w[0] == "Curve" || w[0] == "Line") {
-      session_.geo().addCurveLoop(tag, tags);
-    } else if (w[0] == "Plane") {
-      session_.geo().addPlaneSurface(tag, tags);
-    } else if (w[0] == "Surface") {
-      session_.geo().addSurfaceLoop(tag, tags);
+      requireCount(2, "2 points");
+      geo.addLine(tag, tags[0], tags[1]);
+    } else if (w == Words{"Ellipse"}) {
+      requireCount(4, "{start, center, major axis point, end}");
+      geo.addEllipseArc(tag, tags[0], tags[1], tags[2], tags[3]);
+    } else if (w == Words{"Spline"}) {
+      geo.addSpline(tag, tags);
+    } else if (w == Words{"BSpline"}) {
+      geo.addBSpline(tag, tags);
+    } else if (w == Words{"Bezier"}) {
+      geo.addBezier(tag, tags);
+    } else if (w.size() == 2 && w[1] == "Loop") {
+      if (w[0] == "Surface")
+        geo.addSurfaceLoop(tag, tags);
+      else
+        geo.addCurveLoop(tag, tags);
+    } else if (w == Words{"Plane", "Surface"}) {
+      geo.addPlaneSurface(tag, tags);
+    } else if (w.back() == "Surface") {
+      geo.addFillingSurface(tag, tags);
     } else {
-      session_.geo().addVolume(tag, tags);
+      geo.addVolume(tag, tags);
     }
   } catch (const GeometryError& error) {
     fail(where, error.what());
@@ -92,12 +108,26 @@ bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceL
   return true;
 }
 
+void Interpreter::definePoint(const ast::CommandStmt& command, const SourceLocation& where) {
+  const int tag = entityTag(command, where);
+  const ast::Expr& value = *command.value;
+  std::vector<double> xs = evaluateNumbers(value);
+  if (xs.size() != 3 && xs.size() != 4)
+    fail(value.loc, "Point takes {x, y, z} or {x, y, z, size}, not " + std::to_string(xs.size()) +
+                        " values");
+  try {
+    session_.geo().addPoint(tag, Vec3{xs[0], xs[1], xs[2]}, xs.size() == 4 ? xs[3] : 0.0);
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
 // Circle(tag) = {start, center, end}: an arc of at most half a turn. Other forms (the
 // OpenCASCADE {x, y, z, r} circle) are not supported by the built-in kernel.
 bool Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where) {
   const int tag = entityTag(command, where);
+  if (evaluateNumbers(*command.value).size() != 3) return false;
   const std::vector<int> points = entityTags(*command.value);
-  if (points.size() != 3) return false;
   try {
     session_.geo().addCircleArc(tag, points[0], points[1], points[2]);
   } catch (const GeometryError& error) {
@@ -113,54 +143,38 @@ void Interpreter::definePhysical(const ast::CommandStmt& command, int dim,
                                  const SourceLocation& where) {
   if (command.args.empty() || command.args.size() > 2)
     fail(where, "'" + joined(command.words) + "' takes a tag, a name, or a name and a tag");
-  if (command.op == "-=") {
-    warn(where, "removing entities from a physical group is not supported yet; ignored");
-    return;
-  }
+  GeoFactory& geo = session_.geo();
   Value first = evaluate(*command.args[0]);
   std::string name;
   int tag = 0;
   if (first.kind() == Value::Kind::String) {
     name = first.strings()[0];
-    if (command.args.size() == 2) {
-      tag = static_cast<int>(evaluateNumber(*command.args[1]));
-    } else if (auto known = physicalNames_.find({dim, name}); known != physicalNames_.end()) {
-      tag = known->second;
-    } else {
-      tag = maxPhysicalTag_ + 1;
-    }
+    tag = command.args.size() == 2 ? static_cast<int>(evaluateNumber(*command.args[1]))
+                                   : physicalTagFor(dim, name);
   } else {
     tag = entityTag(command, where);
   }
   if (tag <= 0) fail(where, "physical tag must be a positive integer");
   std::vector<int> entities = entityTags(*command.value);
   try {
-    session_.geo().addPhysicalGroup(dim, tag, name, entities);
+    if (command.op == "-=")
+      geo.removeFromPhysicalGroup(dim, tag, entities);
+    else
+      geo.addPhysicalGroup(dim, tag, name, entities);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
-  if (!name.empty()) physicalNames_[{dim, name}] = tag;
-  maxPhysicalTag_ = std::max(maxPhysicalTag_, tag);
 }
 
-// Point{t} is the coordinates of point t; other shapes as values are not supported yet.
-Value Interpreter::shapeValue(const ast::Expr& expr) {
-  if (expr.words == Words{"Point"} && expr.parts.size() == 1 && !expr.parts[0].isBlock) {
-    std::vector<double> coordinates;
-    for (const auto& item : expr.parts[0].items) {
-      for (int tag : entityTags(*item)) {
-        try {
-          Vec3 p = session_.geo().pointCoordinates(tag);
-          coordinates.insert(coordinates.end(), {p.x, p.y, p.z});
-        } catch (const GeometryError& error) {
-          fail(item->loc, error.what());
-        }
-      }
-    }
-    return Value::list(std::move(coordinates));
+// The tag of the group of that name and dimension, else the next after every physical tag
+// in use (all dimensions), as Gmsh numbers them.
+int Interpreter::physicalTagFor(int dim, const std::string& name) const {
+  int largest = 0;
+  for (const auto& [id, group] : session_.geo().physicalGroups()) {
+    if (id.dim == dim && group.name == name) return id.tag;
+    largest = std::max(largest, id.tag);
   }
-  warn(expr.loc, "'" + joined(expr.words) + "' is not supported yet; gives an empty list");
-  return Value::list({});
+  return largest + 1;
 }
 
 }  // namespace geomesh

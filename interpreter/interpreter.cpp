@@ -82,7 +82,8 @@ void Interpreter::execute(const ast::Stmt& statement) {
         if constexpr (std::is_same_v<Node, ast::CallStmt>) executeCall(node, where);
         if constexpr (std::is_same_v<Node, ast::DefineConstantStmt>) executeDefineConstant(node);
         if constexpr (std::is_same_v<Node, ast::PluginStmt>)
-          warn(where, "'Plugin(" + node.plugin + ")' is not supported yet; ignored");
+          session_.log().debug(where.file + ":" + std::to_string(where.line) + ": Plugin(" +
+                               node.plugin + ") has no effect in batch mode");
       },
       statement.node);
 }
@@ -103,7 +104,8 @@ void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& whe
     const double last = evaluateNumber(*range->args[1]);
     const double step = range->args.size() > 2 ? evaluateNumber(*range->args[2]) : 1.0;
     if (step == 0) fail(range->loc, "loop step must not be zero");
-    const double count = std::floor((last - first) / step + 1e-10 * std::max(1.0, std::fabs((last - first) / step))) + 1;
+    const double span = (last - first) / step;
+    const double count = std::floor(span + 1e-10 * std::max(1.0, std::fabs(span))) + 1;
     if (count > static_cast<double>(kMaxLoopIterations))
       fail(where, "loop has more than " + std::to_string(kMaxLoopIterations) + " iterations");
     for (long long i = 0; i < static_cast<long long>(count); ++i)
@@ -172,7 +174,8 @@ void Interpreter::executeInclude(const ast::CommandStmt& command, const SourceLo
   std::error_code ignored;
   const std::string canonical = std::filesystem::weakly_canonical(path, ignored).string();
   for (const auto& open : includeStack_)
-    if (open == canonical) fail(command.args[0]->loc, "include cycle: '" + shown + "' is already being read");
+    if (open == canonical)
+      fail(command.args[0]->loc, "include cycle: '" + shown + "' is already being read");
   auto text = readFile(shown);
   if (!text || std::filesystem::is_directory(path, ignored))
     fail(command.args[0]->loc, "cannot open include file '" + shown + "'");

@@ -65,7 +65,8 @@ Value Interpreter::binaryValue(const ast::Expr& expr) {
     if (op == "/" && divisor == 0) fail(expr.loc, "division by zero");
   }
   if (left.kind() == Value::Kind::Number && right.kind() == Value::Kind::Number)
-    return Value::number(isArithmetic(op) ? arithmetic(op, a[0], b[0]) : comparison(op, a[0], b[0]));
+    return Value::number(isArithmetic(op) ? arithmetic(op, a[0], b[0])
+                                          : comparison(op, a[0], b[0]));
   if (!isArithmetic(op)) fail(expr.loc, "'" + op + "' compares numbers, not lists");
   if (a.size() != b.size() && a.size() != 1 && b.size() != 1)
     fail(expr.loc, "'" + op + "' on lists of different lengths (" + std::to_string(a.size()) +

@@ -25,7 +25,8 @@ void Interpreter::executeDefineConstant(const ast::DefineConstantStmt& define) {
     Value value;
     if (auto it = numbers.find(name); it != numbers.end()) {
       value = Value::number(it->second);
-    } else if (auto byLabel = label ? numbers.find(*label) : numbers.end(); byLabel != numbers.end()) {
+    } else if (auto byLabel = label ? numbers.find(*label) : numbers.end();
+               byLabel != numbers.end()) {
       value = Value::number(byLabel->second);
     } else if (auto s = strings.find(name); s != strings.end()) {
       value = Value::string(s->second);
@@ -34,7 +35,8 @@ void Interpreter::executeDefineConstant(const ast::DefineConstantStmt& define) {
     } else {
       value = evaluate(*constant.value);
     }
-    if (constant.isList && value.kind() == Value::Kind::Number) value = Value::list(value.numbers());
+    if (constant.isList && value.kind() == Value::Kind::Number)
+      value = Value::list(value.numbers());
     const std::string key = label ? *label : name;
     if (value.kind() == Value::Kind::Number) parameterNumbers_[key] = value.numbers()[0];
     if (value.kind() == Value::Kind::String) parameterStrings_[key] = value.strings()[0];

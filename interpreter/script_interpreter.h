@@ -10,6 +10,9 @@
 
 #include "grammar/ast.h"
 #include "interpreter/value.h"
+#include "kernel/geo/affine_map.h"
+#include "kernel/geo/extrusion_motion.h"
+#include "kernel/model.h"
 #include "stdlib/math_functions.h"
 
 namespace geomesh {
@@ -18,8 +21,10 @@ class Session;
 
 // Walks the AST of a script and its Includes, keeping the variables, macros and source texts
 // of one run. The member functions are spread over files by concern: statements
-// (interpreter.cpp), expressions (evaluator.cpp), built-in functions (builtin_calls.cpp),
-// commands (commands.cpp), geometry (geometry_commands.cpp), parameters (parameters.cpp).
+// (interpreter.cpp), assignments (assignments.cpp), expressions (evaluator.cpp,
+// operators.cpp), built-in functions (builtin_calls.cpp, string_functions.cpp), commands
+// and options (commands.cpp), entity definitions (geometry_commands.cpp), operations on
+// shapes (shape_operations.cpp), parameters (parameters.cpp).
 class Interpreter {
  public:
   explicit Interpreter(Session& session);
@@ -73,12 +78,26 @@ class Interpreter {
   void executeCommand(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrintf(const ast::CommandStmt& command, const SourceLocation& where);
   bool executeGeometry(const ast::CommandStmt& command, const SourceLocation& where);
+  void definePoint(const ast::CommandStmt& command, const SourceLocation& where);
+  int physicalTagFor(int dim, const std::string& name) const;
   bool defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<int> entityTags(const ast::Expr& list);
   void optionChanged(const std::string& name);
   void executeSetter(const ast::CommandStmt& command, const SourceLocation& where);
+
+  // shapes (shape_operations.cpp)
+  static int entityDimension(const std::vector<std::string>& words);
+  std::vector<int> allTags(int dim) const;
+  std::vector<int> shapeTags(const ast::Expr& shape, int dim);
+  std::vector<EntityId> shapesIn(const ast::ShapePart& block);
+  std::vector<double> shapeArguments(const ast::Expr& shape);
+  AffineMap transformMap(const ast::Expr& shape);
+  ExtrusionLayers extrusionLayers(const ast::ShapePart& block);
+  std::vector<EntityId> extrude(const ast::Expr& shape);
+  std::optional<std::vector<EntityId>> shapeOperation(const ast::Expr& shape);
+  bool executeShapeCommand(const ast::CommandStmt& command, const SourceLocation& where);
 
   // parameters (DefineConstant, DefineNumber, DefineString)
   void executeDefineConstant(const ast::DefineConstantStmt& define);
@@ -100,8 +119,6 @@ class Interpreter {
   std::deque<SourceFile> sources_;
   std::deque<ast::StmtList> programs_;  // kept alive: macros point into them
   std::vector<std::string> includeStack_;
-  std::map<std::pair<int, std::string>, int> physicalNames_;  // (dim, name) -> tag
-  int maxPhysicalTag_ = 0;
   mutable std::set<std::string> warned_;
   int callDepth_ = 0;
   RandomEngine random_;

@@ -47,7 +47,8 @@ std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
       if (v.isText())
         parts.insert(parts.end(), v.strings().begin(), v.strings().end());
       else
-        for (double x : v.numbers()) parts.push_back(formatPrintf("%g", std::vector<FormatArgument>{x}));
+        for (double x : v.numbers())
+          parts.push_back(formatPrintf("%g", std::vector<FormatArgument>{x}));
     }
     if (name == "Str" && parts.size() != 1) return Value::stringList(std::move(parts));
     std::string joined;
@@ -70,8 +71,8 @@ std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
     arity(2, 3);
     std::string s = str(0);
     auto from = static_cast<std::size_t>(std::max(0.0, evaluateNumber(*args[1])));
-    std::size_t count = args.size() > 2 ? static_cast<std::size_t>(std::max(0.0, evaluateNumber(*args[2])))
-                                        : std::string::npos;
+    std::size_t count = std::string::npos;
+    if (args.size() > 2) count = static_cast<std::size_t>(std::max(0.0, evaluateNumber(*args[2])));
     return Value::string(from < s.size() ? s.substr(from, count) : std::string());
   }
   if (name == "StrLen") { arity(1, 1); return Value::number(static_cast<double>(str(0).size())); }
@@ -116,7 +117,8 @@ std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
   }
   if (name == "NameToString") {
     arity(1, 1);
-    if (args[0]->kind != ast::ExprKind::Variable) fail(args[0]->loc, "NameToString takes a variable name");
+    if (args[0]->kind != ast::ExprKind::Variable)
+      fail(args[0]->loc, "NameToString takes a variable name");
     return Value::string(resolveName(args[0]->name));
   }
   return std::nullopt;

@@ -17,6 +17,68 @@ struct EntityId {
   friend auto operator<=>(const EntityId&, const EntityId&) = default;
 };
 
+// How an extruded entity is to be meshed (Layers{...} and Recombine inside Extrude): one
+// layer per entry, `elements[i]` elements thick, ending at the normalized height heights[i].
+// Empty `elements`: the extrusion is meshed without layers.
+struct ExtrusionLayers {
+  std::vector<int> elements;
+  std::vector<double> heights;
+  bool recombine = false;
+  friend bool operator==(const ExtrusionLayers&, const ExtrusionLayers&) = default;
+};
+
+// Where an extruded entity comes from: the entity one dimension lower that was swept to make
+// it (a curve from a point, a surface from a curve, a volume from a surface), and its layers.
+struct ExtrusionRecord {
+  int source = 0;
+  ExtrusionLayers layers = {};
+};
+
+// Periodic Curve/Surface{slave} = {master} Translate/Rotate{..}: the slave is the image of the
+// master by `affine` (row-major 4x4, as Gmsh reports it).
+struct Periodicity {
+  int master = 0;
+  std::vector<double> affine = {};
+};
+
+// Transfinite Curve{t} = nodes Using Progression|Bump|Beta coefficient: the curve gets exactly
+// `nodes` nodes, spaced by the law (Progression: each segment `coefficient` times the previous
+// one; Bump: refined towards both ends, the end size `coefficient` times the middle one; Beta:
+// Roberts' boundary-layer stretching towards the start). `reversed` (a negative tag in the
+// script) runs the law from the curve's end.
+struct TransfiniteCurve {
+  enum class Law { Progression, Bump, Beta };
+  int nodes = 2;
+  Law law = Law::Progression;
+  double coefficient = 1;
+  bool reversed = false;
+};
+
+// Transfinite Surface{t} = {corners} Left|Right|Alternate...: a structured mesh of a surface of
+// 3 or 4 sides; `corners` (point tags) are empty when the surface's boundary gives them.
+struct TransfiniteSurface {
+  enum class Arrangement { Left, Right, AlternateLeft, AlternateRight };
+  std::vector<int> corners = {};
+  Arrangement arrangement = Arrangement::Left;
+};
+
+// Field[tag] = type; Field[tag].option = value: a mesh size field as the script defined it.
+struct SizeFieldDefinition {
+  std::string type;
+  std::map<std::string, std::vector<double>> numbers = {};
+  std::map<std::string, std::string> strings = {};
+};
+
+// Mesh constraints set by scripts on entity tags. As in Gmsh, they may be given before the
+// entities are synchronized into the model, so Model::clear() keeps them.
+struct MeshConstraints {
+  std::map<int, TransfiniteCurve> transfiniteCurves = {};
+  std::map<int, TransfiniteSurface> transfiniteSurfaces = {};
+  std::map<int, double> recombinedSurfaces = {};  // tag -> Recombine Surface{t} = angle (deg)
+  std::map<int, SizeFieldDefinition> sizeFields = {};
+  int backgroundField = 0;  // Background Field = tag; 0: none
+};
+
 struct ModelPoint {
   int tag = 0;
   Vec3 xyz;
@@ -28,6 +90,10 @@ struct ModelCurve {
   int startPoint = 0;  // tags of the bounding points (equal for a closed curve)
   int endPoint = 0;
   std::shared_ptr<const CurveGeometry> geometry;
+  std::optional<ExtrusionRecord> extrusion = std::nullopt;
+  std::optional<Periodicity> periodic = std::nullopt;
+  std::vector<int> embeddedPoints = {};
+  std::vector<int> compound = {};  // Compound Curve{..}: the curves meshed together with this one
 };
 
 struct ModelSurface {
@@ -38,12 +104,19 @@ struct ModelSurface {
   std::shared_ptr<const SurfaceGeometry> geometry;
   std::vector<int> embeddedPoints;
   std::vector<int> embeddedCurves;
+  std::optional<ExtrusionRecord> extrusion = std::nullopt;
+  std::optional<Periodicity> periodic = std::nullopt;
+  std::vector<int> compound = {};
 };
 
 struct ModelVolume {
   int tag = 0;
   // Surface loops (shells): the first is the outer one, the others are holes. Signed tags.
   std::vector<std::vector<int>> shells;
+  std::optional<ExtrusionRecord> extrusion = std::nullopt;
+  std::vector<int> embeddedPoints = {};
+  std::vector<int> embeddedCurves = {};
+  std::vector<int> embeddedSurfaces = {};
 };
 
 struct PhysicalGroup {
@@ -60,6 +133,9 @@ struct BoundingBox {
   void include(Vec3 p);
   void include(const BoundingBox& b);
 };
+
+// The smallest box holding the curve (its coordinates' extremes, found to rounding).
+BoundingBox curveBoundingBox(const CurveGeometry& curve);
 
 // The topological model: a boundary representation of points, curves, surfaces and volumes,
 // with adjacencies both ways and physical groups. Geometry factories fill it on synchronize().
@@ -98,6 +174,10 @@ class Model {
   BoundingBox boundingBox(EntityId e) const;
   BoundingBox boundingBox() const;
 
+  // Kept by clear(); see MeshConstraints.
+  MeshConstraints& meshConstraints() { return meshConstraints_; }
+  const MeshConstraints& meshConstraints() const { return meshConstraints_; }
+
  private:
   std::map<int, ModelPoint> points_;
   std::map<int, ModelCurve> curves_;
@@ -105,6 +185,7 @@ class Model {
   std::map<int, ModelVolume> volumes_;
   std::map<EntityId, PhysicalGroup> physicals_;
   std::map<EntityId, std::vector<int>> upward_;  // maintained as entities are added
+  MeshConstraints meshConstraints_;
 };
 
 }  // namespace geomesh

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "mesh/generate.h"
+#include "mesh/transfinite_curve.h"
 
 namespace geomesh {
 namespace {
@@ -125,6 +126,38 @@ int segmentCount(double integral, double turning, bool closed) {
   return std::max(n, closed ? 3 : 1);
 }
 
+void addLines(const std::vector<NodeIndex>& chain, EntityMesh& em) {
+  ElementBlock& lines = em.block(ElementType::Line2);
+  for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+    lines.nodes.insert(lines.nodes.end(), {chain[k], chain[k + 1]});
+}
+
+// Nodes at the given fractions of the arc length (Transfinite Curve); each new node's size is
+// the mean length of its two segments.
+void placeTransfinite(const ModelCurve& curve, const ArcLengthTable& arc,
+                      const std::vector<double>& fractions, Mesh& mesh,
+                      std::vector<double>& nodeSizes) {
+  const CurveGeometry& g = *curve.geometry;
+  const Interval range = g.range();
+  EntityMesh& em = mesh.entity({1, curve.tag});
+  const NodeIndex first = pointNode(mesh, curve.startPoint);
+  std::vector<NodeIndex> chain{first};
+  const std::size_t segments = fractions.size() - 1;
+  for (std::size_t k = 1; k < segments; ++k) {
+    const double t = arc.length() > 0
+                         ? arc.parameterAt(fractions[k] * arc.length())
+                         : range.min + (range.max - range.min) * fractions[k];
+    const NodeIndex node = mesh.addNode(g.point(t));
+    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
+    nodeSizes[node] = 0.5 * arc.length() * (fractions[k + 1] - fractions[k - 1]);
+    em.nodes.push_back(node);
+    em.parametric.push_back(t);
+    chain.push_back(node);
+  }
+  chain.push_back(pointNode(mesh, curve.endPoint));
+  addLines(chain, em);
+}
+
 }  // namespace
 
 NodeIndex pointNode(const Mesh& mesh, int pointTag) {
@@ -145,6 +178,15 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   const bool closed = curve.startPoint == curve.endPoint;
 
   const ArcLengthTable arc(g, range);
+  EntityMesh& em = mesh.entity(id);
+  em.nodes.clear();
+  em.parametric.clear();
+  em.blocks.clear();
+  const auto& transfinite = model.meshConstraints().transfiniteCurves;
+  if (const auto it = transfinite.find(curve.tag); it != transfinite.end()) {
+    placeTransfinite(curve, arc, transfiniteFractions(it->second), mesh, nodeSizes);
+    return;
+  }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
   const SizeIntegral integral(arc.length(), startSize, endSize, rules);
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
@@ -153,10 +195,6 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
     throw MeshError(id, "the mesh size asks for more than 1e9 segments");
   const int segments = segmentCount(integral.total(), turningAngle(g, range), closed);
 
-  EntityMesh& em = mesh.entity(id);
-  em.nodes.clear();
-  em.parametric.clear();
-  em.blocks.clear();
   std::vector<NodeIndex> chain{pointNode(mesh, curve.startPoint)};
   for (int k = 1; k < segments; ++k) {
     const double sigma = integral.arcLengthAt(integral.total() * k / segments);
@@ -170,9 +208,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
     chain.push_back(node);
   }
   chain.push_back(pointNode(mesh, curve.endPoint));
-  ElementBlock& lines = em.block(ElementType::Line2);
-  for (std::size_t k = 0; k + 1 < chain.size(); ++k)
-    lines.nodes.insert(lines.nodes.end(), {chain[k], chain[k + 1]});
+  addLines(chain, em);
 }
 
 std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int signedTag) {

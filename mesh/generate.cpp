@@ -1,13 +1,17 @@
 #include "mesh/generate.h"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <string>
 
 #include "mesh/curve_mesher.h"
 #include "mesh/mesh_check.h"
+#include "mesh/recombine.h"
 #include "mesh/size_rules.h"
 #include "mesh/surface_mesher.h"
+#include "mesh/transfinite_surface.h"
 #include "mesh/volume_mesher.h"
 
 namespace geomesh {
@@ -48,6 +52,33 @@ void meshPoints(const Model& model, const SizeRules& rules, Mesh& mesh,
   }
 }
 
+// Recombine Surface{t} = angle, else Mesh.RecombineAll with the default angle; nullopt: none.
+std::optional<double> recombinationAngle(const Model& model, const MeshOptions& options,
+                                         int tag) {
+  constexpr double kDefaultAngle = 45;
+  const auto& recombined = model.meshConstraints().recombinedSurfaces;
+  if (const auto it = recombined.find(tag); it != recombined.end()) return it->second;
+  if (options.recombineAll) return kDefaultAngle;
+  return std::nullopt;
+}
+
+void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshOptions& options,
+                    const SizeRules& rules, Mesh& mesh, std::vector<double>& nodeSizes) {
+  const std::optional<double> angle = recombinationAngle(model, options, surface.tag);
+  const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
+  if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
+    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
+    return;
+  }
+  meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes);
+  if (!angle || !surface.geometry) return;
+  EntityMesh& em = mesh.entity({2, surface.tag});
+  recombineTriangles(mesh, em, *angle,
+                     options.recombinationAlgorithm == 0 ? RecombinationAlgorithm::Simple
+                                                         : RecombinationAlgorithm::Blossom);
+  smoothMixedMesh(*surface.geometry, mesh, em, std::max(options.smoothing, 1) * 3);
+}
+
 void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRules& rules,
                   Mesh& mesh, std::vector<double>& nodeSizes, MessageSink& log) {
   constexpr int kFrontalDelaunay = 6;
@@ -55,7 +86,7 @@ void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRule
     log.warning("Mesh.Algorithm " + std::to_string(options.algorithm2D) +
                 " is not available: surfaces are meshed with Frontal-Delaunay (6)");
   for (const auto& [tag, surface] : model.surfaces())
-    meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes);
+    meshOneSurface(model, surface, options, rules, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);

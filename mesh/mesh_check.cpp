@@ -269,16 +269,30 @@ class Checker {
     }
   }
 
+  // The surface's triangles, then its quadrangles each cut along a diagonal into two: the
+  // checks of triangles then cover quadrangles (an inverted or non-convex corner makes an
+  // inverted half; the diagonal is an interior edge of exactly two halves).
+  ElementBlock splitFaces(const EntityMesh& em) const {
+    ElementBlock faces;
+    if (const ElementBlock* triangles = em.findBlock(ElementType::Triangle3)) faces = *triangles;
+    if (const ElementBlock* quads = em.findBlock(ElementType::Quad4))
+      for (std::size_t e = 0; e < quads->size(); ++e) {
+        const auto q = quads->element(e);
+        faces.nodes.insert(faces.nodes.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+      }
+    return faces;
+  }
+
   void checkSurface(const ModelSurface& surface) {
     const EntityId id{2, surface.tag};
     const EntityMesh* em = mesh_.find(id);
     if (!em) return;
-    const ElementBlock* triangles = em->findBlock(ElementType::Triangle3);
-    if (!triangles || triangles->size() == 0) return problem(id, "has no triangles");
-    for (NodeIndex n : triangles->nodes)
+    const ElementBlock triangles = splitFaces(*em);
+    if (triangles.size() == 0) return problem(id, "has no triangles");
+    for (NodeIndex n : triangles.nodes)
       if (n >= mesh_.nodeCount()) return;  // reported already
-    checkTriangles(id, surface, *em, *triangles);
-    checkConformity(id, surface, *triangles);
+    checkTriangles(id, surface, *em, triangles);
+    checkConformity(id, surface, triangles);
     checkSurfaceNodes(id, surface, *em);
   }
 

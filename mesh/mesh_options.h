@@ -15,6 +15,9 @@ struct MeshOptions {
   int elementOrder = 1;      // Mesh.ElementOrder
   int numThreads = 1;        // General.NumThreads
   double randomFactor = 1e-9;  // Mesh.RandomFactor
+  bool recombineAll = false;       // Mesh.RecombineAll
+  int recombinationAlgorithm = 1;  // Mesh.RecombinationAlgorithm (0 simple, 1 blossom)
+  int subdivisionAlgorithm = 0;    // Mesh.SubdivisionAlgorithm (1: all quadrangles)
 };
 
 }  // namespace geomesh

@@ -1,6 +1,8 @@
 #include "mesh/surface_mesher.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <unordered_map>
 
@@ -18,6 +20,7 @@ namespace {
 struct SurfaceInput {
   std::vector<NodeIndex> nodes;
   std::vector<ConstrainedSegment> segments;
+  std::vector<int> segmentCurve;  // tag of the curve each segment comes from
   std::unordered_map<NodeIndex, std::uint32_t> localOf;
 
   std::uint32_t local(NodeIndex n) {
@@ -25,18 +28,20 @@ struct SurfaceInput {
     if (inserted) nodes.push_back(n);
     return it->second;
   }
-  void addChain(const std::vector<NodeIndex>& chain, EdgeKind kind) {
-    for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+  void addCurve(const Model& model, const Mesh& mesh, int signedTag, EdgeKind kind) {
+    const std::vector<NodeIndex> chain = curveNodeChain(model, mesh, signedTag);
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
       segments.push_back({local(chain[k]), local(chain[k + 1]), kind});
+      segmentCurve.push_back(std::abs(signedTag));
+    }
   }
 };
 
 SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
   SurfaceInput in;
   for (const std::vector<int>& loop : surface.loops)
-    for (int curve : loop) in.addChain(curveNodeChain(model, mesh, curve), EdgeKind::Boundary);
-  for (int curve : surface.embeddedCurves)
-    in.addChain(curveNodeChain(model, mesh, curve), EdgeKind::Embedded);
+    for (int curve : loop) in.addCurve(model, mesh, curve, EdgeKind::Boundary);
+  for (int curve : surface.embeddedCurves) in.addCurve(model, mesh, curve, EdgeKind::Embedded);
   for (int point : surface.embeddedPoints) in.local(pointNode(mesh, point));
   return in;
 }
@@ -58,6 +63,12 @@ Vec2 boxCenter(const std::vector<Vec2>& points) {
   return {0.5 * (lo.u + hi.u), 0.5 * (lo.v + hi.v)};
 }
 
+std::string text(Vec3 p) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
+  return buffer;
+}
+
 // The constrained Delaunay triangulation of the input, boundary edges recovered.
 Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Vec2>& work,
                                     EntityId id, const Mesh& mesh) {
@@ -71,13 +82,12 @@ Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Ve
   for (ConstrainedSegment& s : segments) s.a += first, s.b += first;
   const long failed = recoverSegments(tri, segments);
   if (failed >= 0) {
-    const ConstrainedSegment& s = in.segments[static_cast<std::size_t>(failed)];
-    const Vec3 a = mesh.node(in.nodes[s.a]), b = mesh.node(in.nodes[s.b]);
-    throw MeshError(id, "cannot recover the boundary edge from (" + std::to_string(a.x) + ", " +
-                            std::to_string(a.y) + ", " + std::to_string(a.z) + ") to (" +
-                            std::to_string(b.x) + ", " + std::to_string(b.y) + ", " +
-                            std::to_string(b.z) +
-                            "): boundary curves intersect or pass through a node");
+    const std::size_t k = static_cast<std::size_t>(failed);
+    const Vec3 a = mesh.node(in.nodes[in.segments[k].a]);
+    const Vec3 b = mesh.node(in.nodes[in.segments[k].b]);
+    throw MeshError(id, "cannot recover the edge from " + text(a) + " to " + text(b) +
+                            " of curve " + std::to_string(in.segmentCurve[k]) +
+                            ": boundary curves intersect or pass through a node");
   }
   return tri;
 }

@@ -30,7 +30,8 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
   return at(a.size(), b.size());
 }
 
-std::vector<std::string> closestNames(std::string_view word, std::span<const std::string> candidates,
+std::vector<std::string> closestNames(std::string_view word,
+                                      std::span<const std::string> candidates,
                                       std::size_t limit) {
   // A third of the word's length, at least 1 and at most 3 edits, counts as a misspelling.
   const std::size_t threshold = std::clamp<std::size_t>(word.size() / 3, 1, 3);

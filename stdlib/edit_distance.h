@@ -13,7 +13,8 @@ std::size_t editDistance(std::string_view a, std::string_view b);
 
 // The candidates closest to `word` (at most `limit`), only those close enough to be a
 // plausible misspelling; best first.
-std::vector<std::string> closestNames(std::string_view word, std::span<const std::string> candidates,
+std::vector<std::string> closestNames(std::string_view word,
+                                      std::span<const std::string> candidates,
                                       std::size_t limit = 3);
 
 }  // namespace geomesh

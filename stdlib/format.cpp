@@ -34,10 +34,12 @@ double asNumber(const FormatArgument& argument, const std::string& spec) {
 std::string convert(std::string spec, char conversion, const FormatArgument& argument) {
   switch (conversion) {
     case 'd': case 'i':
-      return printOne(spec + "ll" + conversion, static_cast<long long>(asNumber(argument, spec + conversion)));
+      return printOne(spec + "ll" + conversion,
+                      static_cast<long long>(asNumber(argument, spec + conversion)));
     case 'o': case 'u': case 'x': case 'X':
       return printOne(spec + "ll" + conversion,
-                      static_cast<unsigned long long>(static_cast<long long>(asNumber(argument, spec + conversion))));
+                      static_cast<unsigned long long>(
+                          static_cast<long long>(asNumber(argument, spec + conversion))));
     case 'c':
       return printOne(spec + conversion, static_cast<int>(asNumber(argument, spec + conversion)));
     case 's':
@@ -68,9 +70,11 @@ std::string formatPrintf(std::string_view format, std::span<const FormatArgument
     std::size_t j = i + 1;
     while (j < format.size() && std::string_view("-+ #0").find(format[j]) != std::string_view::npos)
       spec += format[j++];
-    while (j < format.size() && (std::isdigit(static_cast<unsigned char>(format[j])) || format[j] == '.'))
+    while (j < format.size() &&
+           (std::isdigit(static_cast<unsigned char>(format[j])) || format[j] == '.'))
       spec += format[j++];
-    while (j < format.size() && std::string_view("hlLqjzt").find(format[j]) != std::string_view::npos) ++j;
+    constexpr std::string_view kLengthModifiers = "hlLqjzt";
+    while (j < format.size() && kLengthModifiers.find(format[j]) != std::string_view::npos) ++j;
     if (j >= format.size() ||
         std::string_view("diouxXcseEfFgGaA").find(format[j]) == std::string_view::npos)
       throw std::invalid_argument("unknown conversion in format '" +

@@ -4,7 +4,7 @@
 #include "kernel/geo/circle_arc_geometry.h"
 #include "kernel/geo/ellipse_arc_geometry.h"
 #include "kernel/geo/geo_factory.h"
-#include "kernel/geo/geo_fail.h"
+#include "kernel/geo/geo_detail.h"
 #include "kernel/geo/line_geometry.h"
 #include "kernel/geo/spline_geometry.h"
 
@@ -29,6 +29,7 @@ void GeoFactory::addCircleArc(int tag, int startPoint, int centerPoint, int endP
     fail("Circle ", tag, ": points ", startPoint, " and ", endPoint,
          " are not on one circle around point ", centerPoint, " (radii ", r1, " and ", r2, ")");
   curves_[tag] = Curve{tag, CurveKind::CircleArc, {startPoint, centerPoint, endPoint}};
+  noteTag(1, tag);
 }
 
 void GeoFactory::addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint,
@@ -41,6 +42,7 @@ void GeoFactory::addEllipseArc(int tag, int startPoint, int centerPoint, int maj
   Curve curve{tag, CurveKind::EllipseArc, {startPoint, centerPoint, majorAxisPoint, endPoint}};
   curveGeometry(curve);  // throws when no ellipse fits
   curves_[tag] = std::move(curve);
+  noteTag(1, tag);
 }
 
 void GeoFactory::addSpline(int tag, const std::vector<int>& points) {
@@ -62,6 +64,7 @@ void GeoFactory::addControlPointCurve(int tag, CurveKind kind, const std::vector
   for (int p : points)
     if (!hasPoint(p)) fail(what, " ", tag, ": point ", p, " is not defined");
   curves_[tag] = Curve{tag, kind, points};
+  noteTag(1, tag);
 }
 
 namespace {

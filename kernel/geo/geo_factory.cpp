@@ -4,8 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "kernel/geo/geo_fail.h"
-#include "kernel/plane_geometry.h"
+#include "kernel/geo/geo_detail.h"
 
 namespace geomesh {
 
@@ -37,12 +36,6 @@ std::vector<int> chainLoop(int loopTag, std::vector<int> remaining, const EndsOf
   return chain;
 }
 
-std::vector<int> reversedLoop(std::vector<int> loop) {
-  std::reverse(loop.begin(), loop.end());
-  for (int& c : loop) c = -c;
-  return loop;
-}
-
 }  // namespace
 
 void GeoFactory::addPoint(int tag, Vec3 xyz, double meshSize) {
@@ -51,6 +44,7 @@ void GeoFactory::addPoint(int tag, Vec3 xyz, double meshSize) {
     fail("Point ", tag, ": its coordinates are not finite numbers");
   points_[tag] = ModelPoint{tag, xyz, meshSize};
   bounds_.include(xyz);
+  noteTag(0, tag);
 }
 
 void GeoFactory::addLine(int tag, int startPoint, int endPoint) {
@@ -62,6 +56,7 @@ void GeoFactory::addLine(int tag, int startPoint, int endPoint) {
   if (distance(points_.at(startPoint).xyz, points_.at(endPoint).xyz) <= absoluteTolerance())
     fail("Line ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
   curves_[tag] = Curve{tag, CurveKind::Line, {startPoint, endPoint}};
+  noteTag(1, tag);
 }
 
 void GeoFactory::addCurveLoop(int tag, std::vector<int> curves) {
@@ -71,16 +66,41 @@ void GeoFactory::addCurveLoop(int tag, std::vector<int> curves) {
     if (!curves_.contains(std::abs(c)))
       fail("Curve loop ", tag, ": curve ", std::abs(c), " is not defined");
   curveLoops_[tag] = chainLoop(tag, std::move(curves), [this](int c) { return curveEnds(c); });
+  noteTag(kCurveLoop, tag);
+}
+
+std::vector<std::vector<int>> GeoFactory::surfaceLoopsOf(int tag,
+                                                         const std::vector<int>& curveLoops,
+                                                         const char* what) const {
+  if (curveLoops.empty()) fail(what, " ", tag, " has no curve loop");
+  std::vector<std::vector<int>> loops;
+  for (int l : curveLoops) {
+    if (!curveLoops_.contains(std::abs(l)))
+      fail(what, " ", tag, ": curve loop ", std::abs(l), " is not defined");
+    // Holes run against the direction they were given in, as the built-in kernel of Gmsh
+    // stores them (whatever that direction was).
+    loops.push_back(loopCurves(loops.empty() ? l : -l));
+  }
+  return loops;
 }
 
 void GeoFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   requireNew(surfaces_, tag, "Surface");
-  if (curveLoops.empty()) fail("Plane surface ", tag, " has no curve loop");
-  for (int l : curveLoops)
-    if (!curveLoops_.contains(std::abs(l)))
-      fail("Plane surface ", tag, ": curve loop ", std::abs(l), " is not defined");
-  auto geometry = fitPlaneSurface(tag, curveLoops);
-  surfaces_[tag] = Surface{tag, std::move(curveLoops), std::move(geometry)};
+  auto loops = surfaceLoopsOf(tag, curveLoops, "Plane surface");
+  fitPlaneSurface(tag, loops);  // throws when the loops are not plane
+  surfaces_[tag] = Surface{tag, SurfaceKind::Plane, std::move(loops), std::move(curveLoops)};
+  noteTag(2, tag);
+}
+
+void GeoFactory::addFillingSurface(int tag, std::vector<int> curveLoops) {
+  requireNew(surfaces_, tag, "Surface");
+  auto loops = surfaceLoopsOf(tag, curveLoops, "Surface");
+  if (loops.size() != 1) fail("Surface ", tag, ": a filling surface cannot have holes");
+  if (loops[0].size() != 3 && loops[0].size() != 4)
+    fail("Surface ", tag, ": curve loop ", std::abs(curveLoops[0]), " has ", loops[0].size(),
+         " curves; a filling surface needs 3 or 4");
+  surfaces_[tag] = Surface{tag, SurfaceKind::Filling, std::move(loops), std::move(curveLoops)};
+  noteTag(2, tag);
 }
 
 void GeoFactory::addSurfaceLoop(int tag, std::vector<int> surfaces) {
@@ -91,15 +111,23 @@ void GeoFactory::addSurfaceLoop(int tag, std::vector<int> surfaces) {
       fail("Surface loop ", tag, ": surface ", std::abs(s), " is not defined");
   checkShellClosed(tag, surfaces);
   surfaceLoops_[tag] = std::move(surfaces);
+  noteTag(kSurfaceLoop, tag);
 }
 
 void GeoFactory::addVolume(int tag, std::vector<int> surfaceLoops) {
   requireNew(volumes_, tag, "Volume");
   if (surfaceLoops.empty()) fail("Volume ", tag, " has no surface loop");
-  for (int l : surfaceLoops)
+  Volume volume{tag, {}, surfaceLoops};
+  for (int l : surfaceLoops) {
     if (!surfaceLoops_.contains(std::abs(l)))
       fail("Volume ", tag, ": surface loop ", std::abs(l), " is not defined");
-  volumes_[tag] = Volume{tag, std::move(surfaceLoops)};
+    std::vector<int> shell = surfaceLoops_.at(std::abs(l));
+    if (l < 0)
+      for (int& s : shell) s = -s;
+    volume.shells.push_back(std::move(shell));
+  }
+  volumes_[tag] = std::move(volume);
+  noteTag(3, tag);
 }
 
 void GeoFactory::addPhysicalGroup(int dim, int tag, const std::string& name,
@@ -109,12 +137,49 @@ void GeoFactory::addPhysicalGroup(int dim, int tag, const std::string& name,
   group.dim = dim;
   group.tag = tag;
   if (!name.empty()) group.name = name;
-  for (int e : entities)
-    if (std::find(group.entities.begin(), group.entities.end(), e) == group.entities.end())
-      group.entities.push_back(e);
+  // As in Gmsh, a group holds each entity once, in ascending tags.
+  group.entities.insert(group.entities.end(), entities.begin(), entities.end());
+  std::sort(group.entities.begin(), group.entities.end());
+  group.entities.erase(std::unique(group.entities.begin(), group.entities.end()),
+                       group.entities.end());
+}
+
+void GeoFactory::removeFromPhysicalGroup(int dim, int tag, const std::vector<int>& entities) {
+  auto it = physicals_.find({dim, tag});
+  if (it == physicals_.end()) return;
+  std::erase_if(it->second.entities, [&](int e) {
+    return std::find(entities.begin(), entities.end(), e) != entities.end();
+  });
+  if (it->second.entities.empty()) physicals_.erase(it);
+}
+
+void GeoFactory::setMeshSize(const std::vector<int>& points, double size) {
+  for (int p : points)
+    if (!hasPoint(p)) fail("MeshSize: point ", p, " is not defined");
+  for (int p : points) points_.at(p).meshSize = size;
+}
+
+void GeoFactory::addCompound(int dim, const std::vector<int>& tags) {
+  for (int t : tags)
+    if (!contains({dim, t})) fail("Compound: ", dim == 1 ? "curve " : "surface ", t,
+                                  " is not defined");
+  for (int t : tags) {
+    if (dim == 1) curves_.at(t).compound = tags;
+    if (dim == 2) surfaces_.at(t).compound = tags;
+  }
 }
 
 bool GeoFactory::hasPoint(int tag) const { return points_.contains(tag); }
+
+bool GeoFactory::contains(EntityId e) const {
+  switch (e.dim) {
+    case 0: return points_.contains(e.tag);
+    case 1: return curves_.contains(e.tag);
+    case 2: return surfaces_.contains(e.tag);
+    case 3: return volumes_.contains(e.tag);
+    default: return false;
+  }
+}
 
 Vec3 GeoFactory::pointCoordinates(int tag) const {
   auto it = points_.find(tag);
@@ -123,17 +188,25 @@ Vec3 GeoFactory::pointCoordinates(int tag) const {
 }
 
 int GeoFactory::maxTag(int kind) const {
-  auto last = [](const auto& m) { return m.empty() ? 0 : m.rbegin()->first; };
-  switch (kind) {
-    case 0: return last(points_);
-    case 1: return last(curves_);
-    case 2: return last(surfaces_);
-    case 3: return last(volumes_);
-    case kCurveLoop: return last(curveLoops_);
-    case kSurfaceLoop: return last(surfaceLoops_);
-    default: return 0;
-  }
+  return kind >= 0 && kind < 6 ? highWater_[static_cast<std::size_t>(kind)] : 0;
 }
+
+void GeoFactory::noteTag(int kind, int tag) {
+  int& mark = highWater_[static_cast<std::size_t>(kind)];
+  mark = std::max(mark, tag);
+}
+
+int GeoFactory::newPointTag() { return ++highWater_[0]; }
+
+int GeoFactory::newRegionTag(int kind) {
+  int region = 0;
+  for (int k = 1; k < 6; ++k) region = std::max(region, maxTag(k));
+  for (const auto& [id, group] : physicals_) region = std::max(region, id.tag);
+  noteTag(kind, region + 1);
+  return region + 1;
+}
+
+int GeoFactory::newVolumeTag() { return ++highWater_[3]; }
 
 void GeoFactory::clear() {
   const double tolerance = tolerance_;
@@ -151,90 +224,22 @@ std::array<int, 2> GeoFactory::curveEnds(int signedCurve) const {
   return signedCurve > 0 ? std::array{c.start(), c.end()} : std::array{c.end(), c.start()};
 }
 
-std::vector<Vec3> GeoFactory::loopSamples(int signedLoop) const {
-  constexpr int kArcSamples = 16;
-  std::vector<Vec3> samples;
-  for (int c : loopCurves(signedLoop)) {
-    const Curve& curve = curves_.at(std::abs(c));
-    samples.push_back(points_.at(curveEnds(c)[0]).xyz);
-    if (curve.kind == CurveKind::Line) continue;
-    const auto geometry = curveGeometry(curve);
-    for (int i = 1; i < kArcSamples; ++i) {
-      const double t = static_cast<double>(i) / kArcSamples;
-      samples.push_back(geometry->point(c > 0 ? t : 1 - t));
-    }
-  }
-  return samples;
-}
-
 std::vector<int> GeoFactory::loopCurves(int signedLoop) const {
   const std::vector<int>& loop = curveLoops_.at(std::abs(signedLoop));
-  return signedLoop > 0 ? loop : reversedLoop(loop);
-}
-
-// The plane is fitted to the outer loop (its normal follows the loop's orientation, so the
-// loop runs counter-clockwise in the plane's parameters); every loop must lie on it. Arcs are
-// sampled, so that both the fit and the check see their shape.
-std::shared_ptr<const SurfaceGeometry> GeoFactory::fitPlaneSurface(
-    int tag, const std::vector<int>& loops) const {
-  const PlaneFit fit = fitPlane(loopSamples(loops.front()));
-  if (norm(fit.normal) == 0)
-    fail("Plane surface ", tag, ": curve loop ", std::abs(loops.front()), " encloses no area");
-  auto plane = std::make_shared<PlaneGeometry>(fit.origin, fit.normal);
-  const double tolerance = absoluteTolerance();
-  for (int loop : loops)
-    for (Vec3 xyz : loopSamples(loop)) {
-      const double offset = std::abs(dot(xyz - fit.origin, fit.normal));
-      if (offset > tolerance)
-        fail("Plane surface ", tag, " is not plane: curve loop ", std::abs(loop),
-             " passes ", offset, " away from the plane of curve loop ", std::abs(loops.front()));
-      plane->include(xyz);
-    }
-  return plane;
+  return signedLoop > 0 ? loop : geo_detail::reversedChain(loop);
 }
 
 // A closed shell uses each curve of its surfaces' boundaries exactly twice.
 void GeoFactory::checkShellClosed(int tag, const std::vector<int>& surfaces) const {
   std::map<int, std::vector<int>> surfacesOfCurve;
   for (int s : surfaces)
-    for (int loop : surfaces_.at(std::abs(s)).loops)
-      for (int c : curveLoops_.at(std::abs(loop))) surfacesOfCurve[std::abs(c)].push_back(s);
+    for (const auto& loop : surfaces_.at(std::abs(s)).loops)
+      for (int c : loop) surfacesOfCurve[std::abs(c)].push_back(s);
   for (const auto& [curve, users] : surfacesOfCurve)
     if (users.size() != 2)
       fail("Surface loop ", tag, " is not closed: curve ", curve, " bounds ", users.size(),
            users.size() == 1 ? " of its surfaces (surface " : " of its surfaces (surfaces ",
            std::abs(users.front()), users.size() == 1 ? ")" : ", ...)");
-}
-
-void GeoFactory::synchronize(Model& model) const {
-  model.clear();
-  for (const auto& [tag, p] : points_) model.addPoint(p);
-  for (const auto& [tag, c] : curves_)
-    model.addCurve(ModelCurve{tag, c.start(), c.end(), curveGeometry(c)});
-  for (const auto& [tag, s] : surfaces_) {
-    // Holes run against the direction they were given in, as the built-in kernel of Gmsh
-    // lists them (whatever that direction was).
-    ModelSurface surface{tag, {}, s.geometry, {}, {}};
-    for (std::size_t i = 0; i < s.loops.size(); ++i)
-      surface.loops.push_back(loopCurves(i == 0 ? s.loops[i] : -s.loops[i]));
-    model.addSurface(std::move(surface));
-  }
-  for (const auto& [tag, v] : volumes_) {
-    ModelVolume volume{tag, {}};
-    for (int loop : v.shells) {
-      std::vector<int> shell = surfaceLoops_.at(std::abs(loop));
-      if (loop < 0)
-        for (int& s : shell) s = -s;
-      volume.shells.push_back(std::move(shell));
-    }
-    model.addVolume(std::move(volume));
-  }
-  for (const auto& [id, group] : physicals_) {
-    PhysicalGroup kept = group;
-    const int dim = id.dim;
-    std::erase_if(kept.entities, [&](int e) { return !model.contains({dim, std::abs(e)}); });
-    model.addPhysicalGroup(std::move(kept));
-  }
 }
 
 }  // namespace geomesh

@@ -3,9 +3,12 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "kernel/geo/affine_map.h"
+#include "kernel/geo/extrusion_motion.h"
 #include "kernel/model.h"
 
 namespace geomesh {
@@ -45,12 +48,69 @@ class GeoFactory {
   void addPhysicalGroup(int dim, int tag, const std::string& name,
                         const std::vector<int>& entities);
 
+  // Surface(tag) = {loop}: a surface filling a loop of 3 or 4 curves by transfinite
+  // interpolation of its sides.
+  void addFillingSurface(int tag, std::vector<int> curveLoops);
+  // Compound Curve{..} / Compound Surface{..}: meshed as one; recorded on each entity.
+  void addCompound(int dim, const std::vector<int>& tags);
+  // Physical X(tag) -= {..}: removes entities from a group (the group goes when emptied).
+  void removeFromPhysicalGroup(int dim, int tag, const std::vector<int>& entities);
+  // MeshSize{points} = size; (Characteristic Length): the prescribed mesh size at the points.
+  void setMeshSize(const std::vector<int>& points, double size);
+  // Delete Physicals;
+  void clearPhysicalGroups() { physicals_.clear(); }
+
   bool hasPoint(int tag) const;
+  bool contains(EntityId e) const;  // dims 0..3
   Vec3 pointCoordinates(int tag) const;  // throws if undefined
-  // Largest tag in use; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
-  // 0 when none.
+  // Largest tag given so far; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
+  // Deleting the entity of the largest tag lowers it by one; Coherence resets it to the
+  // largest tag in use. 0 when none.
   int maxTag(int kind) const;
   enum : int { kCurveLoop = 4, kSurfaceLoop = 5 };
+  const std::map<EntityId, PhysicalGroup>& physicalGroups() const { return physicals_; }
+
+  // Transformations (kernel/geo/geo_transform.cpp). Shapes are (dim, tag) pairs; a negative
+  // tag is accepted (orientation is ignored). Every point of the shapes, down to the control
+  // points of their curves, moves once; then coincident entities are merged (Coherence).
+  void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
+  // Duplicata{..}: copies with new tags, numbered as the built-in kernel of Gmsh numbers
+  // them (a surface: the surface first, then its curves with their points). Returns the
+  // copies' (dim, tag) in the order of `shapes`.
+  std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
+  // Delete{..}: removes the shapes that nothing else uses (silently keeps the others);
+  // recursive: then also their boundaries, down to points, when no longer used.
+  void remove(const std::vector<EntityId>& shapes, bool recursive);
+  // Boundary{..}: the boundary of each shape, one dimension lower, as Gmsh gives it: a
+  // curve's ends in its direction (reversed for a negative tag); a surface's curves and a
+  // volume's surfaces in loop order, as positive tags. Combined: entities shared by two of
+  // the shapes cancel out; the others come in ascending tags.
+  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes, bool combined) const;
+  // PointsOf{..}: every point of the shapes, once each, in order of appearance.
+  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const;
+  BoundingBox boundingBox(EntityId shape) const;
+  // Point/Curve/Surface/Volume In BoundingBox{..}: entities of `dim` inside the box (to the
+  // geometric tolerance), ascending tags.
+  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const;
+  // Coherence: merges points closer than the tolerance (the lowest tag stays), then the
+  // curves and surfaces that have become identical.
+  void coherence();
+
+  // Extrude{..}{shapes} (kernel/geo/geo_extrude.cpp): for each shape in turn, its top (its
+  // image at the end of the motion), the entity swept (one dimension higher), then the
+  // lateral entities (for a curve: swept by its end then its start point, as the swept
+  // surface's loop runs; for a surface: one per boundary curve, in loop order). Tags are
+  // given as the built-in kernel of Gmsh gives them, merging coincident entities after
+  // each shape. Layers are recorded on every swept entity.
+  std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
+                                const ExtrusionLayers& layers);
+
+  // Point{..} In Curve/Surface/Volume{t}; Curve{..} In Surface/Volume{t}; Surface{..} In
+  // Volume{t} (kernel/geo/geo_embed.cpp).
+  void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag);
+  // Periodic Curve/Surface{slaves} = {masters} + the transform taking masters to slaves.
+  void setPeriodic(int dim, const std::vector<int>& slaves, const std::vector<int>& masters,
+                   const AffineMap& map);
 
   // Geometry.Tolerance: coincident points and non-planar plane surfaces are detected
   // relative to this fraction of the model's size (the diagonal of its bounding box).
@@ -61,26 +121,54 @@ class GeoFactory {
   void synchronize(Model& model) const;
   void clear();
 
- private:
+  // The definitions, as the unrolled .geo writer lists them.
   enum class CurveKind { Line, CircleArc, EllipseArc, Spline, BSpline, Bezier };
+  enum class SurfaceKind { Plane, Filling, Swept };
   struct Curve {
     int tag;
     CurveKind kind = CurveKind::Line;
     // Points defining the shape: both ends for a line, {start, center, end} for a circle arc,
     // {start, center, major-axis point, end} for an ellipse arc, else the control points.
-    std::vector<int> points;
+    std::vector<int> points = {};
+    std::optional<ExtrusionRecord> extrusion = std::nullopt;
+    std::vector<int> compound = {};
+    std::optional<Periodicity> periodic = std::nullopt;
+    std::vector<int> embeddedPoints = {};
     int start() const { return points.front(); }
     int end() const { return points.back(); }
   };
   struct Surface {
     int tag;
-    std::vector<int> loops;
-    std::shared_ptr<const SurfaceGeometry> geometry;
+    SurfaceKind kind = SurfaceKind::Plane;
+    // Curve loops as chained signed curves: the first is the outer boundary, the others are
+    // holes, each run against the direction it was given in. loopTags: the tags they were
+    // given by (the loops of generated surfaces have none).
+    std::vector<std::vector<int>> loops = {};
+    std::vector<int> loopTags = {};
+    std::optional<ExtrusionRecord> extrusion = std::nullopt;
+    std::optional<ExtrusionMotion> sweep = std::nullopt;  // Swept: the motion of the source
+    std::vector<int> compound = {};
+    std::optional<Periodicity> periodic = std::nullopt;
+    std::vector<int> embeddedPoints = {};
+    std::vector<int> embeddedCurves = {};
   };
   struct Volume {
     int tag;
-    std::vector<int> shells;
+    std::vector<std::vector<int>> shells = {};  // signed surfaces; first outer
+    std::vector<int> shellTags = {};
+    std::optional<ExtrusionRecord> extrusion = std::nullopt;
+    std::vector<int> embeddedPoints = {};
+    std::vector<int> embeddedCurves = {};
+    std::vector<int> embeddedSurfaces = {};
   };
+  const std::map<int, ModelPoint>& points() const { return points_; }
+  const std::map<int, Curve>& curves() const { return curves_; }
+  const std::map<int, std::vector<int>>& curveLoops() const { return curveLoops_; }
+  const std::map<int, Surface>& surfaces() const { return surfaces_; }
+  const std::map<int, std::vector<int>>& surfaceLoops() const { return surfaceLoops_; }
+  const std::map<int, Volume>& volumes() const { return volumes_; }
+
+ private:
   std::map<int, ModelPoint> points_;
   std::map<int, Curve> curves_;
   std::map<int, std::vector<int>> curveLoops_;
@@ -89,19 +177,54 @@ class GeoFactory {
   std::map<int, Volume> volumes_;
   std::map<EntityId, PhysicalGroup> physicals_;
   double tolerance_ = 1e-8;
+  std::array<int, 6> highWater_{};  // maxTag() of each kind
+  // Replacements made by Coherence since lastMerges_ was last cleared, per dimension (signed).
+  std::array<std::map<int, int>, 4> lastMerges_;
   BoundingBox bounds_;  // of the points, kept as they are added
 
   double absoluteTolerance() const;
+  void noteTag(int kind, int tag);
+  int newPointTag();
+  int newRegionTag(int kind);  // curves, surfaces: shared numbering with loops and physicals
+  int newVolumeTag();
   std::array<int, 2> curveEnds(int signedCurve) const;
   std::shared_ptr<const CurveGeometry> curveGeometry(const Curve& c) const;
+  std::shared_ptr<const SurfaceGeometry> surfaceGeometry(const Surface& s) const;
   void addControlPointCurve(int tag, CurveKind kind, const std::vector<int>& points,
                             const char* what);
-  // Points along a loop, in its direction: each curve's start, and inner points of arcs.
-  std::vector<Vec3> loopSamples(int signedLoop) const;
+  std::vector<std::vector<int>> surfaceLoopsOf(int tag, const std::vector<int>& curveLoops,
+                                               const char* what) const;
+  // Points along a chain of signed curves: each curve's start, and inner points of curved ones.
+  std::vector<Vec3> loopSamples(const std::vector<int>& curves) const;
   std::vector<int> loopCurves(int signedLoop) const;
-  std::shared_ptr<const SurfaceGeometry> fitPlaneSurface(int tag,
-                                                       const std::vector<int>& loops) const;
+  std::shared_ptr<const SurfaceGeometry> fitPlaneSurface(
+      int tag, const std::vector<std::vector<int>>& loops) const;
   void checkShellClosed(int tag, const std::vector<int>& surfaces) const;
+
+  // geo_transform.cpp
+  void requireShape(EntityId shape, const char* operation) const;
+  void collectPoints(EntityId shape, std::vector<int>& out) const;
+  int copyPoint(int tag);
+  int copyCurve(int signedTag);
+  static std::vector<int> reversedPoints(const Curve& c);
+  int copySurface(int tag);
+  int copyVolume(int tag);
+  bool isUsed(EntityId e) const;
+  void eraseEntity(EntityId e);
+  // geo_coherence.cpp
+  void mergePoints();
+  void mergeCurves();
+  void mergeSurfaces();
+  void replaceTags(int dim, const std::map<int, int>& signedReplacement);
+  void resetHighWater();
+  // geo_extrude.cpp
+  std::vector<EntityId> extrudePoint(int tag, const ExtrusionMotion& motion,
+                                     const ExtrusionLayers& layers);
+  std::vector<EntityId> extrudeCurve(int tag, const ExtrusionMotion& motion,
+                                     const ExtrusionLayers& layers);
+  std::vector<EntityId> extrudeSurface(int tag, const ExtrusionMotion& motion,
+                                       const ExtrusionLayers& layers);
+  void moveCopy(EntityId copy, const ExtrusionMotion& motion);
 };
 
 }  // namespace geomesh

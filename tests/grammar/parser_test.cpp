@@ -147,8 +147,17 @@ TEST(Parser, MissingSemicolonPointsAfterThePreviousToken) {
 TEST(Parser, UnexpectedTokenNamesWhatWasExpected) {
   EXPECT_EQ(syntaxError("a = (1 + 2;"), "1:11: unexpected ';', expected ')'");
   EXPECT_EQ(syntaxError("a = * 2;"), "1:5: unexpected '*', expected an expression");
+}
+
+TEST(Parser, EndOfFileInsideABlockOrBracketPointsAtItsOpening) {
   EXPECT_EQ(syntaxError("For i In {1:2}\n a = 1;\n"),
-            "3:1: unexpected end of file, expected 'EndFor'");
+            "1:1: 'For' is never closed: 'EndFor' expected before the end of the file");
+  EXPECT_EQ(syntaxError("a = 1;\nIf (a)\n  For i In {1:2}\n  EndFor\n"),
+            "2:1: 'If' is never closed: 'EndIf' expected before the end of the file");
+  EXPECT_EQ(syntaxError("Macro m\n a = 1;\n"),
+            "1:1: 'Macro' is never closed: 'Return' expected before the end of the file");
+  EXPECT_EQ(syntaxError("x = 1;\nLine(1) = {1, 2\n"),
+            "2:11: '{' is never closed: '}' expected before the end of the file");
 }
 
 }  // namespace
@@ -171,6 +180,21 @@ TEST(ParserLimits, DeepNestingIsASyntaxErrorNotACrash) {
 TEST(ParserLimits, CommentMarkersInsideStringsAreText) {
   auto program = parse("s = \"a // b /* c\";");
   EXPECT_EQ(std::get<AssignStmt>(program.at(0)->node).value->text, "a // b /* c");
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(Parser, ExtrudeUsingWireNeedsNoSemicolon) {
+  auto program = parse("Extrude { Surface{1}; } Using Wire {2}\nDelete { Point{1}; }\n");
+  ASSERT_EQ(program.size(), 2u);
+  const auto& extrude = std::get<CommandStmt>(program[0]->node);
+  ASSERT_EQ(extrude.tail.size(), 1u);
+  EXPECT_EQ(extrude.tail[0].word, "Using");
+  EXPECT_EQ(extrude.tail[0].value->words[0], "Wire");
 }
 
 }  // namespace

@@ -38,6 +38,21 @@ TEST(Expressions, TernaryIsRightAssociative) {
   EXPECT_EQ(printed("Printf(\"%g\", 0 ? 3 : 0 ? 5 : 6);"), "6\n");
 }
 
+TEST(Expressions, PrecedenceMatrixAsTheReferencePrintsIt) {
+  EXPECT_EQ(printed("a = 3; b = 0;\n"
+                    "Printf(\"%g %g %g %g\", -1 ? 2 : 3, !a == b, 1 < 2 < 3, 2 * -3);\n"
+                    "Printf(\"%g %g %g %g\", - - 2, 3 - -2, 2^0.5, 7 % -3);\n"
+                    "Printf(\"%g %g %g %g\", 5 / 2 * 2, 1 == 1 && 2, 0 || 0, 2 + 3 * 4 ^ 2 / 8 % 5);\n"
+                    "Printf(\"%g %g %g\", 1 ? 0 ? 5 : 6 : 7, (1 + 2) * (3 - 4), 10 % 4 * 3);\n"
+                    "Printf(\"%g %g\", -2 ^ -2, !0 * 5);\n"
+                    "Printf(\"%g %g\", 1 + (a > 2), a >= 3 == 1);"),
+            "2 1 1 -6\n2 5 1.41421 1\n5 1 0 3\n6 -3 6\n-0.25 5\n2 1\n");
+}
+
+TEST(Expressions, DivisionByZeroIsAnError) {
+  EXPECT_EQ(firstLineOf("x = 1;\ny = x / 0;"), "test.geo:2:7: error: division by zero");
+}
+
 TEST(Expressions, Variables) {
   EXPECT_EQ(printed("a = 2; b = a * 3; Printf(\"%g\", b);"), "6\n");
   EXPECT_EQ(printed("a = 1; a += 2; a *= 4; a -= 1; a /= 11; Printf(\"%g\", a);"), "1\n");

@@ -111,23 +111,6 @@ TEST(Geometry, NamedPhysicalTagsCountAcrossDimensions) {
   EXPECT_EQ(groups.at({1, 6}).name, "d");
 }
 
-TEST(Geometry, UnsupportedStatementsWarnAndContinue) {
-  ScriptRun run;
-  run.run(
-      "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
-      "Ellipse(1) = {2, 1, 3, 3};\n"
-      "Extrude {0, 0, 1} { Point{1}; Layers{4}; Recombine; }\n"
-      "Transfinite Curve{1} = 10 Using Progression 1.1;\n"
-      "Field[1] = Distance; Field[1].PointsList = {1};\n"
-      "Printf(\"done\");\n");
-  EXPECT_EQ(run.out.str(), "done\n");
-  ASSERT_EQ(run.log.warnings.size(), 5u);
-  EXPECT_EQ(run.log.warnings[0], "test.geo:2:1: warning: 'Ellipse' is not supported yet; ignored");
-  EXPECT_EQ(run.log.warnings[1], "test.geo:3:1: warning: 'Extrude' is not supported yet; ignored");
-  EXPECT_EQ(run.log.warnings[2],
-            "test.geo:4:1: warning: 'Transfinite Curve' is not supported yet; ignored");
-}
-
 TEST(Geometry, InterfaceStatementsAreAcceptedSilently) {
   ScriptRun run;
   run.run("Point(1) = {0,0,0};\nHide {Point{1};}\nShow \"*\";\nDraw;\nColor Red {Point{1};}\n"

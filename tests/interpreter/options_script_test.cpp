@@ -31,9 +31,18 @@ TEST(ScriptOptions, StringsAndColours) {
   EXPECT_EQ(run.session.options().number("General.Color.Background"), 255 * 65536);
 }
 
-TEST(ScriptOptions, UnknownOptionSuggestsTheClosest) {
-  EXPECT_EQ(firstLineOf("Mesh.MeshSizeMn = 1;"),
-            "test.geo:1:1: error: unknown option 'Mesh.MeshSizeMn'; did you mean 'Mesh.MeshSizeMin'?");
+TEST(ScriptOptions, SettingAnUnknownOptionWarnsWithTheClosest) {
+  ScriptRun run;
+  run.run("Mesh.MeshSizeMn = 1;\nPrintf(\"on\");");
+  EXPECT_EQ(run.out.str(), "on\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_NE(run.log.warnings[0].find("test.geo:1:1:"), std::string::npos) << run.log.warnings[0];
+  EXPECT_NE(run.log.warnings[0].find("did you mean 'Mesh.MeshSizeMin'?"), std::string::npos)
+      << run.log.warnings[0];
+  EXPECT_EQ(run.session.options().number("Mesh.MeshSizeMin"), 0);
+}
+
+TEST(ScriptOptions, ReadingAnUnknownOptionIsAnError) {
   EXPECT_EQ(firstLineOf("x = Mesh.Algoritm;"),
             "test.geo:1:5: error: unknown option 'Mesh.Algoritm'; did you mean 'Mesh.Algorithm'?");
 }
@@ -45,10 +54,16 @@ TEST(ScriptOptions, WrongValueTypes) {
             "test.geo:1:26: error: option 'Geometry.OCCTargetUnit' takes a string");
 }
 
-TEST(ScriptOptions, OtherCategoriesWarn) {
+TEST(ScriptOptions, PostProcessingOptionsAreIgnoredQuietly) {
   ScriptRun run;
-  run.run("View[0].Visible = 0;\nPrint.Width = 100;\n");
-  EXPECT_EQ(run.log.warnings.size(), 2u);
+  run.run("View[0].Visible = 0;\nPrint.Width = 100;\nView.Light = 0;\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+}
+
+TEST(ScriptOptions, FieldOptionsWarn) {
+  ScriptRun run;
+  run.run("Field[1].PointsList = {1};\n");
+  EXPECT_EQ(run.log.warnings.size(), 1u);
 }
 
 }  // namespace

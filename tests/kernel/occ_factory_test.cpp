@@ -108,7 +108,8 @@ TEST(OccFactory, EvaluatorsMatchFiniteDifferences) {
                (c.geometry->firstDerivative(t + h) - c.geometry->firstDerivative(t - h)) / (2 * h),
                1e-7);
   }
-  for (const auto& [tag, s] : model.surfaces()) {
+  for (const auto& entry : model.surfaces()) {
+    const ModelSurface& s = entry.second;
     const ParamBox b = s.geometry->bounds();
     const Vec2 uv{b.u.min + 0.3 * (b.u.max - b.u.min), b.v.min + 0.6 * (b.v.max - b.v.min)};
     const SurfaceDerivatives d = s.geometry->firstDerivatives(uv);

@@ -1,8 +1,10 @@
 #pragma once
 
-// Error helpers shared by the files of the built-in kernel (not part of its interface).
+// Helpers shared by the files of the built-in kernel (not part of its interface).
 
+#include <algorithm>
 #include <sstream>
+#include <vector>
 
 #include "kernel/geometry_error.h"
 
@@ -18,6 +20,13 @@ template <class... Parts>
 template <class Map>
 void requireNew(const Map& map, int tag, const char* what) {
   if (map.contains(tag)) fail(what, " ", tag, " already exists");
+}
+
+// The same chain of signed curves (or surfaces) run the other way.
+inline std::vector<int> reversedChain(std::vector<int> chain) {
+  std::reverse(chain.begin(), chain.end());
+  for (int& c : chain) c = -c;
+  return chain;
 }
 
 }  // namespace geomesh::geo_detail

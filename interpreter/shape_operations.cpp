@@ -1,0 +1,283 @@
+// Operations on shapes of the built-in kernel: transformations, Duplicata, Extrude, Boundary,
+// Delete, Coherence, Compound, In (embedding), Periodic; and shapes used as values.
+#include <cmath>
+
+#include "interpreter/script_interpreter.h"
+#include "interpreter/session.h"
+#include "kernel/geometry_error.h"
+
+namespace geomesh {
+
+namespace {
+
+using Words = std::vector<std::string>;
+
+bool isTransform(const std::string& word) {
+  return word == "Translate" || word == "Rotate" || word == "Symmetry" || word == "Dilate" ||
+         word == "Affine";
+}
+
+std::vector<int> tagsOf(const std::vector<EntityId>& shapes) {
+  std::vector<int> tags;
+  for (const auto& shape : shapes) tags.push_back(shape.tag);
+  return tags;
+}
+
+std::vector<double> asDoubles(const std::vector<int>& tags) {
+  return std::vector<double>(tags.begin(), tags.end());
+}
+
+}  // namespace
+
+int Interpreter::entityDimension(const std::vector<std::string>& words) {
+  if (words.size() != 1) return -1;
+  if (words[0] == "Point") return 0;
+  if (words[0] == "Line" || words[0] == "Curve") return 1;
+  if (words[0] == "Surface") return 2;
+  if (words[0] == "Volume") return 3;
+  return -1;
+}
+
+std::vector<int> Interpreter::allTags(int dim) const {
+  const GeoFactory& geo = session_.geo();
+  std::vector<int> tags;
+  auto collect = [&](const auto& map) {
+    for (const auto& entry : map) tags.push_back(entry.first);
+  };
+  if (dim == 0) collect(geo.points());
+  if (dim == 1) collect(geo.curves());
+  if (dim == 2) collect(geo.surfaces());
+  if (dim == 3) collect(geo.volumes());
+  return tags;
+}
+
+// The tags of Point{..}, Curve{..}, ... with ':' standing for every entity of the kind.
+std::vector<int> Interpreter::shapeTags(const ast::Expr& shape, int dim) {
+  std::vector<int> tags;
+  for (const auto& part : shape.parts) {
+    for (const auto& item : part.items) {
+      std::vector<int> more = item->kind == ast::ExprKind::All ? allTags(dim) : entityTags(*item);
+      tags.insert(tags.end(), more.begin(), more.end());
+    }
+  }
+  return tags;
+}
+
+// { Point{1}; Curve{2, 3}; Duplicata{..}; Translate{..}{..}; ... }
+std::vector<EntityId> Interpreter::shapesIn(const ast::ShapePart& block) {
+  std::vector<EntityId> shapes;
+  for (const auto& item : block.items) {
+    if (item->kind != ast::ExprKind::Shape) fail(item->loc, "expected shapes such as Point{1};");
+    const int dim = entityDimension(item->words);
+    if (dim >= 0 && !item->parts.empty() && !item->parts[0].isBlock) {
+      for (int tag : shapeTags(*item, dim)) shapes.push_back(EntityId{dim, tag});
+    } else if (auto produced = shapeOperation(*item)) {
+      shapes.insert(shapes.end(), produced->begin(), produced->end());
+    } else if (item->words != Words{"Layers"} && item->words != Words{"Recombine"}) {
+      warn(item->loc, "'" + (item->words.empty() ? std::string("?") : item->words[0]) +
+                          "' is not supported here; ignored");
+    }
+  }
+  return shapes;
+}
+
+// The numbers inside the first braces of Translate{..}, Rotate{..}, Extrude{..}, ...
+std::vector<double> Interpreter::shapeArguments(const ast::Expr& shape) {
+  if (shape.parts.empty() || shape.parts[0].isBlock) return {};
+  return evaluateNumbers(shape.parts[0].items);
+}
+
+AffineMap Interpreter::transformMap(const ast::Expr& shape) {
+  const std::string& kind = shape.words[0];
+  const std::vector<double> v = shapeArguments(shape);
+  auto require = [&](std::size_t count, const char* form) {
+    if (v.size() != count)
+      fail(shape.loc, kind + " takes " + form + ", not " + std::to_string(v.size()) + " values");
+  };
+  if (kind == "Translate") {
+    require(3, "{dx, dy, dz}");
+    return AffineMap::translation({v[0], v[1], v[2]});
+  }
+  if (kind == "Rotate") {
+    require(7, "{{axis}, {point}, angle}");
+    return AffineMap::rotation({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]);
+  }
+  if (kind == "Symmetry") {
+    require(4, "{a, b, c, d}");
+    return AffineMap::symmetry(v[0], v[1], v[2], v[3]);
+  }
+  if (kind == "Dilate") {
+    if (v.size() == 4) return AffineMap::dilation({v[0], v[1], v[2]}, {v[3], v[3], v[3]});
+    require(6, "{{center}, factor} or {{center}, {factors}}");
+    return AffineMap::dilation({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
+  }
+  if (v.size() != 12 && v.size() != 16) require(12, "12 numbers (a 3 x 4 matrix)");
+  AffineMap map;
+  for (std::size_t i = 0; i < 12; ++i) map.m[i] = v[i];
+  return map;
+}
+
+ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
+  ExtrusionLayers layers;
+  for (const auto& item : block.items) {
+    if (item->words == Words{"Recombine"}) layers.recombine = true;
+    if (item->words != Words{"Layers"} || item->parts.empty()) continue;
+    const auto& values = item->parts[0].items;
+    if (values.size() == 1) {
+      layers.elements.push_back(static_cast<int>(evaluateNumber(*values[0])));
+      layers.heights.push_back(1);
+    } else if (values.size() == 2) {
+      for (double n : evaluateNumbers(*values[0])) layers.elements.push_back(static_cast<int>(n));
+      layers.heights = evaluateNumbers(*values[1]);
+    } else {
+      fail(item->loc, "Layers takes {n} or {{n1, n2, ...}, {h1, h2, ...}}");
+    }
+  }
+  return layers;
+}
+
+std::vector<EntityId> Interpreter::extrude(const ast::Expr& shape) {
+  const std::vector<double> v = shapeArguments(shape);
+  ExtrusionMotion motion;
+  if (v.size() == 3)
+    motion = ExtrusionMotion::translate({v[0], v[1], v[2]});
+  else if (v.size() == 7)
+    motion = ExtrusionMotion::rotate({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]);
+  else if (v.size() == 10)
+    motion = ExtrusionMotion::twist({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]},
+                                    v[9]);
+  else
+    fail(shape.loc, "Extrude takes {dx, dy, dz}, {{axis}, {point}, angle} or "
+                    "{{dx, dy, dz}, {axis}, {point}, angle}");
+  const ast::ShapePart& block = shape.parts.back();
+  return session_.geo().extrude(shapesIn(block), motion, extrusionLayers(block));
+}
+
+// Operations that produce shapes; nullopt when `shape` is none of them.
+std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr& shape) {
+  if (shape.words.size() != 1 || shape.parts.empty()) return std::nullopt;
+  const std::string& kind = shape.words[0];
+  // The shapes come last, in braces: { Point{1}; } or, without semicolons, { Duplicata{..} }.
+  try {
+    if (kind == "Duplicata" && shape.parts.size() == 1)
+      return session_.geo().duplicate(shapesIn(shape.parts[0]));
+    if ((kind == "Boundary" || kind == "CombinedBoundary") && shape.parts.size() == 1)
+      return session_.geo().boundary(shapesIn(shape.parts[0]), kind == "CombinedBoundary");
+    if (isTransform(kind) && shape.parts.size() == 2) {
+      const AffineMap map = transformMap(shape);
+      std::vector<EntityId> shapes = shapesIn(shape.parts[1]);
+      session_.geo().transform(shapes, map);
+      return shapes;
+    }
+    if (kind == "Extrude" && shape.parts.size() == 2) return extrude(shape);
+  } catch (const GeometryError& error) {
+    fail(shape.loc, error.what());
+  }
+  return std::nullopt;
+}
+
+bool Interpreter::executeShapeCommand(const ast::CommandStmt& command,
+                                      const SourceLocation& where) {
+  const Words& w = command.words;
+  GeoFactory& geo = session_.geo();
+  try {
+    if (w == Words{"Coherence"} && !command.shape && command.args.empty()) {
+      geo.coherence();
+      return true;
+    }
+    if (w == Words{"Delete", "Physicals"} && !command.shape) {
+      geo.clearPhysicalGroups();
+      return true;
+    }
+    if (!command.shape) return false;
+    const ast::Expr& shape = *command.shape;
+    if (command.op.empty() && command.tail.empty() && shapeOperation(shape)) return true;
+    if ((w == Words{"Delete"} || w == Words{"Recursive", "Delete"}) && shape.parts.size() == 1 &&
+        shape.parts[0].isBlock) {
+      geo.remove(shapesIn(shape.parts[0]), w.size() == 2);
+      return true;
+    }
+    if (w.size() == 2 && w[0] == "Compound" && entityDimension({w[1]}) > 0) {
+      const int dim = entityDimension({w[1]});
+      geo.addCompound(dim, shapeTags(shape, dim));
+      return true;
+    }
+    if (!command.tail.empty() && command.tail[0].word == "In" && command.tail[0].value &&
+        command.tail.size() == 1) {
+      const ast::Expr& host = *command.tail[0].value;
+      const int dim = entityDimension(w), hostDim = entityDimension(host.words);
+      if (dim < 0 || hostDim < 0) return false;
+      const std::vector<int> tags = shapeTags(shape, dim);
+      for (int hostTag : shapeTags(host, hostDim)) geo.embed(dim, tags, hostDim, hostTag);
+      return true;
+    }
+    if (w.size() == 2 && w[0] == "Periodic" && command.value && command.tail.size() == 1 &&
+        command.tail[0].word.empty() && command.tail[0].value &&
+        isTransform(command.tail[0].value->words.at(0))) {
+      const int dim = entityDimension({w[1]});
+      if (dim < 1) return false;
+      geo.setPeriodic(dim, shapeTags(shape, dim), entityTags(*command.value),
+                      transformMap(*command.tail[0].value));
+      return true;
+    }
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+  return false;
+}
+
+// Point{t}: its coordinates. Curve{..}, Surface{:}: tags. Operations: the tags they give.
+// Volume In BoundingBox{..}: the tags of the entities inside. BoundingBox Surface{..}: the
+// box {xmin, ymin, zmin, xmax, ymax, zmax} around them.
+Value Interpreter::shapeValue(const ast::Expr& expr) {
+  const Words& w = expr.words;
+  if (w == Words{"Point"} && expr.parts.size() == 1 && !expr.parts[0].isBlock) {
+    std::vector<double> coordinates;
+    for (int tag : shapeTags(expr, 0)) {
+      try {
+        Vec3 p = session_.geo().pointCoordinates(tag);
+        coordinates.insert(coordinates.end(), {p.x, p.y, p.z});
+      } catch (const GeometryError& error) {
+        fail(expr.parts[0].items.front()->loc, error.what());
+      }
+    }
+    return Value::list(std::move(coordinates));
+  }
+  const int dim = entityDimension(w);
+  if (dim > 0 && expr.parts.size() == 1 && !expr.parts[0].isBlock)
+    return Value::list(asDoubles(shapeTags(expr, dim)));
+  if (w.size() == 3 && w[1] == "In" && w[2] == "BoundingBox" && entityDimension({w[0]}) >= 0) {
+    const std::vector<double> v = shapeArguments(expr);
+    if (v.size() != 6) fail(expr.loc, "BoundingBox takes {xmin, ymin, zmin, xmax, ymax, zmax}");
+    BoundingBox box;
+    box.include(Vec3{v[0], v[1], v[2]});
+    box.include(Vec3{v[3], v[4], v[5]});
+    return Value::list(asDoubles(session_.geo().entitiesInBox(entityDimension({w[0]}), box)));
+  }
+  if (w.size() == 2 && w[0] == "BoundingBox" && entityDimension({w[1]}) >= 0 &&
+      expr.parts.size() == 1) {
+    const int boxDim = entityDimension({w[1]});
+    BoundingBox box;
+    try {
+      for (int tag : shapeTags(expr, boxDim))
+        box.include(session_.geo().boundingBox(EntityId{boxDim, std::abs(tag)}));
+    } catch (const GeometryError& error) {
+      fail(expr.loc, error.what());
+    }
+    if (box.empty()) fail(expr.loc, "bounding box of no entity");
+    return Value::list({box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z});
+  }
+  if (w == Words{"PointsOf"} && expr.parts.size() == 1 && expr.parts[0].isBlock) {
+    try {
+      return Value::list(asDoubles(session_.geo().pointsOf(shapesIn(expr.parts[0]))));
+    } catch (const GeometryError& error) {
+      fail(expr.loc, error.what());
+    }
+  }
+  if (auto shapes = shapeOperation(expr)) return Value::list(asDoubles(tagsOf(*shapes)));
+  warn(expr.loc, "'" + (w.empty() ? std::string("{..}") : w[0]) +
+                     "' is not supported yet; gives an empty list");
+  return Value::list({});
+}
+
+}  // namespace geomesh

@@ -1,0 +1,60 @@
+#include "kernel/geo/affine_map.h"
+
+#include <cmath>
+
+#include "kernel/geometry_error.h"
+
+namespace geomesh {
+
+AffineMap AffineMap::translation(Vec3 d) {
+  return {{1, 0, 0, d.x, 0, 1, 0, d.y, 0, 0, 1, d.z}};
+}
+
+AffineMap AffineMap::rotation(Vec3 axis, Vec3 point, double angle) {
+  if (norm(axis) == 0) throw GeometryError("Rotation: the axis is the zero vector");
+  const Vec3 u = normalized(axis);
+  const double c = std::cos(angle), s = std::sin(angle);
+  // The rotation matrix of angle `angle` about the unit vector u, term by term.
+  AffineMap map;
+  map.m = {u.x * u.x * (1 - c) + c,       u.x * u.y * (1 - c) - u.z * s, u.x * u.z * (1 - c) + u.y * s,
+           0,
+           u.x * u.y * (1 - c) + u.z * s, u.y * u.y * (1 - c) + c,       u.y * u.z * (1 - c) - u.x * s,
+           0,
+           u.x * u.z * (1 - c) - u.y * s, u.y * u.z * (1 - c) + u.x * s, u.z * u.z * (1 - c) + c,
+           0};
+  map.pivot = point;
+  return map;
+}
+
+AffineMap AffineMap::symmetry(double a, double b, double c, double d) {
+  const double n2 = a * a + b * b + c * c;
+  if (n2 == 0) throw GeometryError("Symmetry: the plane's normal is the zero vector");
+  const double n[3] = {a, b, c};
+  AffineMap map;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) map.m[4 * i + j] = (i == j ? 1.0 : 0.0) - 2 * n[i] * n[j] / n2;
+    map.m[4 * i + 3] = -2 * n[i] * d / n2;
+  }
+  return map;
+}
+
+AffineMap AffineMap::dilation(Vec3 center, Vec3 factors) {
+  return {{factors.x, 0, 0, 0, 0, factors.y, 0, 0, 0, 0, factors.z, 0}, center};
+}
+
+std::array<double, 16> AffineMap::homogeneous() const {
+  std::array<double, 16> h{};
+  const double p[3] = {pivot.x, pivot.y, pivot.z};
+  for (std::size_t i = 0; i < 3; ++i) {
+    double moved = 0;
+    for (std::size_t j = 0; j < 3; ++j) {
+      h[4 * i + j] = m[4 * i + j];
+      moved += m[4 * i + j] * p[j];
+    }
+    h[4 * i + 3] = m[4 * i + 3] + p[i] - moved;
+  }
+  h[15] = 1;
+  return h;
+}
+
+}  // namespace geomesh

@@ -1,0 +1,98 @@
+// The geometry of the built-in kernel's surfaces, and the Model built from its entities.
+#include <cmath>
+#include <cstdlib>
+
+#include "kernel/geo/geo_factory.h"
+#include "kernel/geo/geo_detail.h"
+#include "kernel/geo/swept_surface_geometry.h"
+#include "kernel/plane_geometry.h"
+
+namespace geomesh {
+
+using geo_detail::fail;
+
+std::vector<Vec3> GeoFactory::loopSamples(const std::vector<int>& curves) const {
+  constexpr int kCurveSamples = 16;
+  std::vector<Vec3> samples;
+  for (int c : curves) {
+    const Curve& curve = curves_.at(std::abs(c));
+    samples.push_back(points_.at(curveEnds(c)[0]).xyz);
+    if (curve.kind == CurveKind::Line) continue;
+    const auto geometry = curveGeometry(curve);
+    for (int i = 1; i < kCurveSamples; ++i) {
+      const double t = static_cast<double>(i) / kCurveSamples;
+      samples.push_back(geometry->point(c > 0 ? t : 1 - t));
+    }
+  }
+  return samples;
+}
+
+// The plane is fitted to the outer loop (its normal follows the loop's orientation, so the
+// loop runs counter-clockwise in the plane's parameters); every loop must lie on it. Curved
+// curves are sampled, so that both the fit and the check see their shape.
+std::shared_ptr<const SurfaceGeometry> GeoFactory::fitPlaneSurface(
+    int tag, const std::vector<std::vector<int>>& loops) const {
+  const PlaneFit fit = fitPlane(loopSamples(loops.front()));
+  if (norm(fit.normal) == 0) fail("Plane surface ", tag, ": its outer loop encloses no area");
+  auto plane = std::make_shared<PlaneGeometry>(fit.origin, fit.normal);
+  const double tolerance = absoluteTolerance();
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    for (Vec3 xyz : loopSamples(loops[i])) {
+      const double offset = std::abs(dot(xyz - fit.origin, fit.normal));
+      if (offset > tolerance)
+        fail("Plane surface ", tag, " is not plane: its ",
+             i == 0 ? "outer loop" : "hole " + std::to_string(i), " passes ", offset,
+             " away from the plane of its outer loop");
+      plane->include(xyz);
+    }
+  return plane;
+}
+
+std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
+  if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops);
+  const std::vector<int>& loop = s.loops.front();
+  if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion)
+    if (auto source = curves_.find(std::abs(s.extrusion->source)); source != curves_.end())
+      return std::make_shared<SweptSurfaceGeometry>(curveGeometry(source->second), *s.sweep);
+  std::vector<CoonsSurfaceGeometry::Side> sides;
+  for (int c : loop) sides.push_back({curveGeometry(curves_.at(std::abs(c))), c < 0});
+  if (sides.size() != 3 && sides.size() != 4)
+    fail("Surface ", s.tag, ": its loop has ", sides.size(),
+         " curves; a non-plane surface needs 3 or 4");
+  return std::make_shared<CoonsSurfaceGeometry>(std::move(sides));
+}
+
+void GeoFactory::synchronize(Model& model) const {
+  model.clear();
+  for (const auto& [tag, p] : points_) model.addPoint(p);
+  for (const auto& [tag, c] : curves_) {
+    ModelCurve& curve = model.addCurve(ModelCurve{tag, c.start(), c.end(), curveGeometry(c)});
+    curve.extrusion = c.extrusion;
+    curve.periodic = c.periodic;
+    curve.embeddedPoints = c.embeddedPoints;
+    curve.compound = c.compound;
+  }
+  for (const auto& [tag, s] : surfaces_) {
+    ModelSurface surface{tag, s.loops, surfaceGeometry(s), s.embeddedPoints, s.embeddedCurves};
+    surface.extrusion = s.extrusion;
+    surface.periodic = s.periodic;
+    surface.compound = s.compound;
+    model.addSurface(std::move(surface));
+  }
+  for (const auto& [tag, v] : volumes_) {
+    ModelVolume volume{tag, v.shells};
+    volume.extrusion = v.extrusion;
+    volume.embeddedPoints = v.embeddedPoints;
+    volume.embeddedCurves = v.embeddedCurves;
+    volume.embeddedSurfaces = v.embeddedSurfaces;
+    model.addVolume(std::move(volume));
+  }
+  for (const auto& [id, group] : physicals_) {
+    PhysicalGroup kept = group;
+    const int dim = id.dim;
+    std::erase_if(kept.entities, [&](int e) { return !model.contains({dim, std::abs(e)}); });
+    model.addPhysicalGroup(std::move(kept));
+  }
+}
+
+}  // namespace geomesh

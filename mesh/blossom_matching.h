@@ -1,0 +1,17 @@
+#pragma once
+
+// Plain C++17 interface: blossom_matching.cpp is compiled as C++17 (LEMON's headers are not
+// C++20).
+#include <cstdint>
+#include <vector>
+
+namespace geomesh {
+
+// A maximum-weight matching (Edmonds' blossom algorithm, by LEMON) of the graph on
+// `nodeCount` nodes whose edge e joins ends[2e] and ends[2e + 1] with weight weights[e] (an
+// integer; larger is better). Returns one flag per edge: 1 when the edge is matched.
+std::vector<std::uint8_t> maxWeightMatching(std::uint32_t nodeCount,
+                                            const std::vector<std::uint32_t>& ends,
+                                            const std::vector<std::int64_t>& weights);
+
+}  // namespace geomesh

@@ -1,0 +1,48 @@
+#include "kernel/geo/geo_unrolled_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "kernel/geo/geo_factory.h"
+
+namespace geomesh {
+namespace {
+
+TEST(GeoUnrolledWriter, WritesEntitiesSizesLoopsAndPhysicals) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 0.1);
+  geo.addPoint(2, {1, 0, 0}, 0.2);
+  geo.addPoint(3, {1, 1, 0}, 0.1);
+  geo.addPoint(4, {0, 1, 0}, 0);
+  geo.addPoint(5, {0.2, 0.2, 0}, 0.05);
+  geo.addPoint(6, {0.4, 0.2, 0}, 0.05);
+  geo.addPoint(7, {0.4, 0.4, 0}, 0.05);
+  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
+  geo.addLine(5, 5, 6);
+  geo.addLine(6, 6, 7);
+  geo.addLine(7, 7, 5);
+  geo.addBezier(8, {1, 6, 7});
+  geo.addCurveLoop(1, {1, 2, 3, 4});
+  geo.addCurveLoop(2, {5, 6, 7});
+  geo.addPlaneSurface(1, {1, 2});
+  geo.addFillingSurface(2, {2});
+  geo.addPhysicalGroup(2, 5, "plate", {1});
+  geo.addPhysicalGroup(1, 3, "", {1, 2});
+  std::ostringstream out;
+  writeUnrolledGeo(geo, out);
+  EXPECT_EQ(out.str(),
+            "cl__1 = 0.1;\ncl__2 = 0.2;\ncl__3 = 1e+22;\ncl__4 = 0.05;\n"
+            "Point(1) = {0, 0, 0, cl__1};\nPoint(2) = {1, 0, 0, cl__2};\n"
+            "Point(3) = {1, 1, 0, cl__1};\nPoint(4) = {0, 1, 0, cl__3};\n"
+            "Point(5) = {0.2, 0.2, 0, cl__4};\nPoint(6) = {0.4, 0.2, 0, cl__4};\n"
+            "Point(7) = {0.4, 0.4, 0, cl__4};\n"
+            "Line(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\n"
+            "Line(5) = {5, 6};\nLine(6) = {6, 7};\nLine(7) = {7, 5};\nBezier(8) = {1, 6, 7};\n"
+            "Curve Loop(1) = {1, 2, 3, 4, -7, -6, -5};\nPlane Surface(1) = {1};\n"
+            "Curve Loop(2) = {5, 6, 7};\nSurface(2) = {2};\n"
+            "Physical Curve(3) = {1, 2};\nPhysical Surface(\"plate\") = {1};\n");
+}
+
+}  // namespace
+}  // namespace geomesh

@@ -1,0 +1,111 @@
+#include "mesh/recombine.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "mesh/generate.h"
+#include "mesh/mesh_check.h"
+#include "mesh_test_models.h"
+
+namespace geomesh {
+namespace {
+
+using testing::PolygonModelBuilder;
+
+class SilentSink final : public MessageSink {
+ public:
+  void info(std::string_view) override {}
+  void warning(std::string_view) override {}
+};
+
+struct Counts {
+  std::size_t triangles = 0, quads = 0;
+  double minQuality = 1, area = 0;
+};
+
+Counts count(const Mesh& mesh, int surface) {
+  Counts c;
+  const EntityMesh* em = mesh.find({2, surface});
+  if (const ElementBlock* t = em->findBlock(ElementType::Triangle3)) {
+    c.triangles = t->size();
+    for (std::size_t e = 0; e < t->size(); ++e) {
+      const auto n = t->element(e);
+      c.area += 0.5 * norm(cross(mesh.node(n[1]) - mesh.node(n[0]),
+                                 mesh.node(n[2]) - mesh.node(n[0])));
+    }
+  }
+  if (const ElementBlock* q = em->findBlock(ElementType::Quad4)) {
+    c.quads = q->size();
+    for (std::size_t e = 0; e < q->size(); ++e) {
+      const auto n = q->element(e);
+      const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), cc = mesh.node(n[2]),
+                 d = mesh.node(n[3]);
+      c.minQuality = std::min(c.minQuality, quadAngleQuality(a, b, cc, d, {0, 0, 1}));
+      c.area += 0.5 * norm(cross(cc - a, d - b));
+    }
+  }
+  return c;
+}
+
+Model recombinedSquare(double size) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, size)});
+  b.model.meshConstraints().recombinedSurfaces[1] = 45;
+  return std::move(b.model);
+}
+
+TEST(Recombine, QuadAngleQualityOfARectangleIsOne) {
+  EXPECT_NEAR(quadAngleQuality({0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 0, 1}), 1, 1e-12);
+  EXPECT_LT(quadAngleQuality({0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 0, -1}), 0);
+  // A dart (non-convex) is rejected.
+  EXPECT_LT(quadAngleQuality({0, 0, 0}, {2, 0, 0}, {0.5, 0.5, 0}, {0, 2, 0}, {0, 0, 1}), 0);
+}
+
+TEST(Recombine, SimpleAlgorithmPairsMostTriangles) {
+  const Model model = recombinedSquare(0.05);
+  MeshOptions options;
+  options.recombinationAlgorithm = 0;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(model, options, 2, mesh, log);
+  const Counts c = count(mesh, 1);
+  // The reference mesher leaves 417 quadrangles and 108 triangles here.
+  EXPECT_GT(c.quads, 350u);
+  EXPECT_LT(c.triangles, 250u);
+  EXPECT_GT(c.minQuality, 0.2);
+  EXPECT_NEAR(c.area, 1.0, 1e-9);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+TEST(Recombine, BlossomLeavesAtMostAFewTriangles) {
+  const Model model = recombinedSquare(0.05);
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(model, {}, 2, mesh, log);
+  const Counts c = count(mesh, 1);
+  // The reference mesher makes 463 quadrangles and no triangle here.
+  EXPECT_GT(c.quads, 420u);
+  EXPECT_LT(c.quads, 510u);
+  EXPECT_LE(c.triangles, 4u);
+  EXPECT_GT(c.minQuality, 0.05);
+  EXPECT_NEAR(c.area, 1.0, 1e-9);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+TEST(Recombine, RecombineAllAppliesToEverySurface) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
+  MeshOptions options;
+  options.recombineAll = true;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, options, 2, mesh, log);
+  EXPECT_GT(count(mesh, 1).quads, 80u);
+  EXPECT_TRUE(checkMesh(b.model, mesh).ok());
+}
+
+}  // namespace
+}  // namespace geomesh

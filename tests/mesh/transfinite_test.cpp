@@ -1,0 +1,215 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "mesh/generate.h"
+#include "mesh/mesh_check.h"
+#include "mesh/transfinite_curve.h"
+#include "mesh_test_models.h"
+
+namespace geomesh {
+namespace {
+
+using testing::PolygonModelBuilder;
+
+class SilentSink final : public MessageSink {
+ public:
+  void info(std::string_view) override {}
+  void warning(std::string_view) override {}
+};
+
+TransfiniteCurve law(int nodes, TransfiniteCurve::Law kind, double coefficient,
+                     bool reversed = false) {
+  TransfiniteCurve t;
+  t.nodes = nodes;
+  t.law = kind;
+  t.coefficient = coefficient;
+  t.reversed = reversed;
+  return t;
+}
+
+void expectFractions(const std::vector<double>& actual, const std::vector<double>& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t k = 0; k < actual.size(); ++k)
+    EXPECT_NEAR(actual[k], expected[k], 1e-5) << "node " << k;
+}
+
+TEST(TransfiniteCurve, ProgressionIsGeometric) {
+  expectFractions(transfiniteFractions(law(6, TransfiniteCurve::Law::Progression, 2)),
+                  {0, 1 / 31.0, 3 / 31.0, 7 / 31.0, 15 / 31.0, 1});
+}
+
+TEST(TransfiniteCurve, ReversedProgressionIsMirrored) {
+  expectFractions(transfiniteFractions(law(6, TransfiniteCurve::Law::Progression, 2, true)),
+                  {0, 16 / 31.0, 24 / 31.0, 28 / 31.0, 30 / 31.0, 1});
+}
+
+TEST(TransfiniteCurve, UnitProgressionIsEven) {
+  expectFractions(transfiniteFractions(law(5, TransfiniteCurve::Law::Progression, 1)),
+                  {0, 0.25, 0.5, 0.75, 1});
+}
+
+TEST(TransfiniteCurve, BumpRefinesBothEnds) {
+  // Sizes 1 : 2 : 3 : 3 : 2 : 1 for 7 nodes and a coefficient of 0.2.
+  expectFractions(transfiniteFractions(law(7, TransfiniteCurve::Law::Bump, 0.2)),
+                  {0, 1 / 12.0, 3 / 12.0, 0.5, 9 / 12.0, 11 / 12.0, 1});
+  const std::vector<double> coarseEnds =
+      transfiniteFractions(law(11, TransfiniteCurve::Law::Bump, 2));
+  EXPECT_NEAR(coarseEnds[1], 0.136729, 2e-4);
+  EXPECT_NEAR(coarseEnds[5], 0.5, 1e-12);
+}
+
+TEST(TransfiniteCurve, BetaFollowsRobertsStretching) {
+  expectFractions(transfiniteFractions(law(6, TransfiniteCurve::Law::Beta, 1.5)),
+                  {0, 0.148803, 0.327238, 0.533181, 0.760647, 1});
+}
+
+TEST(TransfiniteCurve, MesherPlacesNodesAlongTheCurve) {
+  PolygonModelBuilder b;
+  const int p = b.point(0, 0), q = b.point(1, 0);
+  const int line = b.line(p, q);
+  b.model.meshConstraints().transfiniteCurves[line] =
+      law(6, TransfiniteCurve::Law::Progression, 2, true);
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 1, mesh, log);
+  const EntityMesh* em = mesh.find({1, line});
+  ASSERT_NE(em, nullptr);
+  ASSERT_EQ(em->nodes.size(), 4u);
+  EXPECT_NEAR(mesh.node(em->nodes[0]).x, 16 / 31.0, 1e-9);
+  EXPECT_NEAR(mesh.node(em->nodes[3]).x, 30 / 31.0, 1e-9);
+  EXPECT_EQ(mesh.elementCount(1), 5u);
+}
+
+// A 2 x 1 rectangle with n nodes on its horizontal sides and m on its vertical ones.
+Model rectangle(int n, int m) {
+  PolygonModelBuilder b;
+  const std::vector<int> loop = b.polygon({{0, 0}, {2, 0}, {2, 1}, {0, 1}}, 0.1);
+  b.surface({loop});
+  auto& c = b.model.meshConstraints();
+  c.transfiniteCurves[loop[0]] = law(n, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[2]] = law(n, TransfiniteCurve::Law::Progression, 1.2);
+  c.transfiniteCurves[loop[1]] = law(m, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[3]] = law(m, TransfiniteCurve::Law::Bump, 0.5);
+  c.transfiniteSurfaces[1] = {};
+  return std::move(b.model);
+}
+
+double faceArea(const Mesh& mesh, int surface) {
+  double area = 0;
+  for (const ElementBlock& block : mesh.find({2, surface})->blocks)
+    for (std::size_t e = 0; e < block.size(); ++e) {
+      const auto n = block.element(e);
+      for (std::size_t k = 1; k + 1 < n.size(); ++k)
+        area += 0.5 * norm(cross(mesh.node(n[k]) - mesh.node(n[0]),
+                                 mesh.node(n[k + 1]) - mesh.node(n[0])));
+    }
+  return area;
+}
+
+TEST(TransfiniteSurface, RectangleGetsTwoTrianglesPerCell) {
+  for (auto arrangement :
+       {TransfiniteSurface::Arrangement::Left, TransfiniteSurface::Arrangement::Right,
+        TransfiniteSurface::Arrangement::AlternateLeft}) {
+    Model model = rectangle(7, 5);
+    model.meshConstraints().transfiniteSurfaces[1].arrangement = arrangement;
+    Mesh mesh;
+    SilentSink log;
+    generateMesh(model, {}, 2, mesh, log);
+    EXPECT_EQ(mesh.elementCount(2), 2u * 6 * 4);
+    EXPECT_EQ(mesh.nodeCount(), 7u * 5);
+    EXPECT_NEAR(faceArea(mesh, 1), 2.0, 1e-12);
+    const MeshCheckReport report = checkMesh(model, mesh);
+    EXPECT_TRUE(report.ok()) << report.summary();
+  }
+}
+
+TEST(TransfiniteSurface, RecombinedRectangleGetsQuadrangles) {
+  Model model = rectangle(9, 4);
+  model.meshConstraints().recombinedSurfaces[1] = 45;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(model, {}, 2, mesh, log);
+  const EntityMesh* em = mesh.find({2, 1});
+  ASSERT_NE(em->findBlock(ElementType::Quad4), nullptr);
+  EXPECT_EQ(em->findBlock(ElementType::Quad4)->size(), 8u * 3);
+  EXPECT_EQ(em->findBlock(ElementType::Triangle3), nullptr);
+  EXPECT_NEAR(faceArea(mesh, 1), 2.0, 1e-12);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+TEST(TransfiniteSurface, FlippedPlaneKeepsPositiveOrientation) {
+  PolygonModelBuilder b;
+  const std::vector<int> loop = b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1);
+  b.surface({loop}, /*flipped=*/true);
+  for (int c : loop)
+    b.model.meshConstraints().transfiniteCurves[c] = law(4, TransfiniteCurve::Law::Progression, 1);
+  b.model.meshConstraints().transfiniteSurfaces[1] = {};
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 2, mesh, log);
+  EXPECT_EQ(mesh.elementCount(2), 18u);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+TEST(TransfiniteSurface, TriangleCollapsesTheFirstCorner) {
+  PolygonModelBuilder b;
+  const std::vector<int> loop = b.polygon({{0, 0}, {2, 0}, {0, 1}}, 0.1);
+  b.surface({loop});
+  auto& c = b.model.meshConstraints();
+  c.transfiniteCurves[loop[0]] = law(4, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[1]] = law(3, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[2]] = law(4, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteSurfaces[1] = {};
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 2, mesh, log);
+  EXPECT_EQ(mesh.nodeCount(), 10u);
+  EXPECT_EQ(mesh.elementCount(2), 10u);
+  EXPECT_NEAR(faceArea(mesh, 1), 1.0, 1e-12);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+TEST(TransfiniteSurface, UnequalOppositeSidesAreAnError) {
+  Model model = rectangle(7, 5);
+  model.meshConstraints().transfiniteCurves[3].nodes = 6;
+  Mesh mesh;
+  SilentSink log;
+  try {
+    generateMesh(model, {}, 2, mesh, log);
+    FAIL() << "expected a MeshError";
+  } catch (const MeshError& e) {
+    EXPECT_EQ(e.entity.dim, 2);
+    EXPECT_EQ(e.entity.tag, 1);
+    EXPECT_NE(std::string(e.what()).find("sides 1 and 3 have 7 and 6 nodes"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(TransfiniteSurface, ExplicitCornersSplitALongerLoop) {
+  PolygonModelBuilder b;
+  // Five points: the bottom side is two curves.
+  const std::vector<int> loop = b.polygon({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}}, 0.1);
+  b.surface({loop});
+  auto& c = b.model.meshConstraints();
+  c.transfiniteCurves[loop[0]] = law(3, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[1]] = law(3, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[2]] = law(4, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[3]] = law(5, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteCurves[loop[4]] = law(4, TransfiniteCurve::Law::Progression, 1);
+  c.transfiniteSurfaces[1].corners = {1, 3, 4, 5};
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 2, mesh, log);
+  EXPECT_EQ(mesh.elementCount(2), 2u * 4 * 3);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+}  // namespace
+}  // namespace geomesh
