@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "app/mesh_summary.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/session.h"
+#include "kernel/geo/geo_unrolled_writer.h"
 #include "kernel/geometry_error.h"
 #include "mesh/generate.h"
 #include "mesh/io/msh_reader.h"
@@ -103,12 +105,31 @@ bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
   return true;
 }
 
+// -0: the evaluated geometry as a flat script, <script>.geo_unrolled unless -o says otherwise.
+void writeUnrolled(const CommandLine& cl, Session& session, ConsoleLog& log) {
+  const std::string path = cl.output.empty() ? cl.files.front() + "_unrolled" : cl.output;
+  const std::string partial = path + ".partial";
+  log.info("Writing '" + path + "'...");
+  {
+    std::ofstream out(partial, std::ios::binary);
+    writeUnrolledGeo(session.geo(), out);
+    out.close();
+    if (!out) {
+      std::filesystem::remove(partial);
+      throw std::runtime_error("cannot write '" + path + "'");
+    }
+  }
+  std::filesystem::rename(partial, path);
+  log.info("Done writing '" + path + "'");
+}
+
 void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   const int dim = *cl.dimension;
   MshWriteOptions w = writeOptions(cl, session.options());
   if (dim == 0) {
     session.synchronize();
     log.info("Geometry: " + describeModel(session.model()));
+    writeUnrolled(cl, session, log);
     return;
   }
   Stopwatch watch;

@@ -16,12 +16,10 @@ AffineMap AffineMap::rotation(Vec3 axis, Vec3 point, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   // The rotation matrix of angle `angle` about the unit vector u, term by term.
   AffineMap map;
-  map.m = {u.x * u.x * (1 - c) + c,       u.x * u.y * (1 - c) - u.z * s, u.x * u.z * (1 - c) + u.y * s,
-           0,
-           u.x * u.y * (1 - c) + u.z * s, u.y * u.y * (1 - c) + c,       u.y * u.z * (1 - c) - u.x * s,
-           0,
-           u.x * u.z * (1 - c) - u.y * s, u.y * u.z * (1 - c) + u.x * s, u.z * u.z * (1 - c) + c,
-           0};
+  const double t = 1 - c;
+  map.m = {u.x * u.x * t + c,       u.x * u.y * t - u.z * s, u.x * u.z * t + u.y * s, 0,
+           u.x * u.y * t + u.z * s, u.y * u.y * t + c,       u.y * u.z * t - u.x * s, 0,
+           u.x * u.z * t - u.y * s, u.y * u.z * t + u.x * s, u.z * u.z * t + c,       0};
   map.pivot = point;
   return map;
 }

@@ -43,7 +43,8 @@ std::vector<EntityId> GeoFactory::extrude(const std::vector<EntityId>& shapes,
     else if (shape.dim == 2) made = extrudeSurface(tag, motion, layers);
     else fail("Extrude: volume ", tag, " cannot be extruded");
     for (auto& merges : lastMerges_) merges.clear();
-    coherence();
+    if (autoCoherence_) coherence();
+    if (!returnLaterals_ && made.size() > 2) made.resize(2);
     for (EntityId e : made)
       out.push_back({e.dim, remapped(e.tag, lastMerges_[static_cast<std::size_t>(e.dim)])});
   }

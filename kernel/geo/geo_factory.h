@@ -75,8 +75,8 @@ class GeoFactory {
   // points of their curves, moves once; then coincident entities are merged (Coherence).
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
   // Duplicata{..}: copies with new tags, numbered as the built-in kernel of Gmsh numbers
-  // them (a surface: the surface first, then its curves with their points). Returns the
-  // copies' (dim, tag) in the order of `shapes`.
+  // them (a surface: the surface first, then its curves with their points; a negative curve
+  // tag copies the reversed curve). Returns the copies' (dim, tag) in the order of `shapes`.
   std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
   // Delete{..}: removes the shapes that nothing else uses (silently keeps the others);
   // recursive: then also their boundaries, down to points, when no longer used.
@@ -101,7 +101,9 @@ class GeoFactory {
   // lateral entities (for a curve: swept by its end then its start point, as the swept
   // surface's loop runs; for a surface: one per boundary curve, in loop order). Tags are
   // given as the built-in kernel of Gmsh gives them, merging coincident entities after
-  // each shape. Layers are recorded on every swept entity.
+  // each shape. Layers are recorded on every swept entity. A point on the rotation axis
+  // sweeps nothing (the surface of a curve touching the axis has three sides; a curve on
+  // the axis sweeps no surface).
   std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
                                 const ExtrusionLayers& layers);
 
@@ -116,6 +118,11 @@ class GeoFactory {
   // relative to this fraction of the model's size (the diagonal of its bounding box).
   void setTolerance(double relativeTolerance) { tolerance_ = relativeTolerance; }
   double tolerance() const { return tolerance_; }
+  // Geometry.AutoCoherence (default on): transformations and extrusions end with Coherence.
+  void setAutoCoherence(bool on) { autoCoherence_ = on; }
+  // Geometry.ExtrudeReturnLateralEntities (default on): extrusions list their lateral
+  // entities after the swept one.
+  void setExtrudeReturnsLateralEntities(bool on) { returnLaterals_ = on; }
 
   // Replaces the model's geometry with this factory's entities.
   void synchronize(Model& model) const;
@@ -177,6 +184,8 @@ class GeoFactory {
   std::map<int, Volume> volumes_;
   std::map<EntityId, PhysicalGroup> physicals_;
   double tolerance_ = 1e-8;
+  bool autoCoherence_ = true;
+  bool returnLaterals_ = true;
   std::array<int, 6> highWater_{};  // maxTag() of each kind
   // Replacements made by Coherence since lastMerges_ was last cleared, per dimension (signed).
   std::array<std::map<int, int>, 4> lastMerges_;

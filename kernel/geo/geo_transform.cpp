@@ -75,7 +75,7 @@ void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap&
         surface.sweep.reset();
     }
   }
-  coherence();
+  if (autoCoherence_) coherence();
 }
 
 int GeoFactory::copyPoint(int tag) {

@@ -2,6 +2,8 @@
 // sees, as the built-in kernel of Gmsh gives them.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "script_runner.h"
 
 namespace geomesh::testing {

@@ -234,6 +234,16 @@ TEST(GeoExtrude, DuplicatedVolumesTakeTheSharedNumbering) {
   EXPECT_EQ(geo.volumes().at(27).shells.front(), (std::vector<int>{1, 26, 13, 17, 21, 25}));
 }
 
+TEST(GeoExtrude, OptionsDropLateralsAndCoherence) {
+  GeoFactory geo;
+  addUnitSquareSurface(geo);
+  geo.setExtrudeReturnsLateralEntities(false);
+  geo.setAutoCoherence(false);
+  const auto out = geo.extrude({{1, 1}}, ExtrusionMotion::translate({0, 0, 1}), kNoLayers);
+  EXPECT_EQ(out, ids({{1, 5}, {2, 8}}));
+  EXPECT_EQ(geo.maxTag(0), 10);  // the copies' points stay apart from the swept points
+}
+
 TEST(GeoExtrude, UndefinedShapeIsNamed) {
   GeoFactory geo;
   try {

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "kernel/vec3.h"
+
+namespace geomesh {
+
+// Nearest-point queries on a fixed set of points: a k-d tree stored in one array (the points
+// reordered so that each subtree is a contiguous range split at its middle element).
+class PointCloud {
+ public:
+  explicit PointCloud(std::vector<Vec3> points);
+  bool empty() const { return points_.empty(); }
+  // Distance from p to the nearest point; 1e22 when there are none.
+  double distanceTo(Vec3 p) const;
+
+ private:
+  void build(std::uint32_t begin, std::uint32_t end, int depth);
+  void search(Vec3 p, std::uint32_t begin, std::uint32_t end, double& best2) const;
+  std::vector<Vec3> points_;
+  std::vector<std::uint8_t> axis_;  // split axis of the subtree whose middle element is k
+};
+
+}  // namespace geomesh
