@@ -83,9 +83,11 @@ def triangles(msh_path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("cases", nargs="*", default=list(CASES))
+    parser.add_argument("--geomesh", default=str(GEOMESH), help="the geomesh executable")
     args = parser.parse_args()
-    if not GEOMESH.exists():
-        sys.exit(f"build geomesh first ({GEOMESH} is missing): bash scripts/setup.sh")
+    geomesh = Path(args.geomesh)
+    if not geomesh.exists():
+        sys.exit(f"build geomesh first ({geomesh} is missing): bash scripts/setup.sh")
     python = ensure_reference()
     reference = [str(python), "-c",
                  "import sys, gmsh; gmsh.initialize(['gmsh'] + sys.argv[1:], run=True); gmsh.finalize()"]
@@ -95,7 +97,7 @@ def main():
     for name in args.cases:
         script, extra, stage = CASES[name]
         rows = {}
-        for program, cmd in (("geomesh", [str(GEOMESH)]), ("reference", reference)):
+        for program, cmd in (("geomesh", [str(geomesh)]), ("reference", reference)):
             out = work / f"{name}-{program}.msh"
             full = cmd + [str(SCRIPTS / script)] + extra + ["-nt", "1", "-o", str(out)]
             wall, rss, log = measure(full, work)

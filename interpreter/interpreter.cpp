@@ -15,8 +15,6 @@ namespace geomesh {
 
 namespace {
 
-constexpr std::size_t kMaxLoopIterations = 10'000'000;
-constexpr int kMaxCallDepth = 200;
 
 std::optional<std::string> readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -106,15 +104,13 @@ void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& whe
     if (step == 0) fail(range->loc, "loop step must not be zero");
     const double span = (last - first) / step;
     const double count = std::floor(span + 1e-10 * std::max(1.0, std::fabs(span))) + 1;
-    if (count > static_cast<double>(kMaxLoopIterations))
-      fail(where, "loop has more than " + std::to_string(kMaxLoopIterations) + " iterations");
+    if (count > maxLoopIterations()) failTooManyIterations(where);
     for (long long i = 0; i < static_cast<long long>(count); ++i)
       values.push_back(first + static_cast<double>(i) * step);
     after = first + static_cast<double>(values.size()) * step;
   } else {
     values = evaluateNumbers(*range);
-    if (values.size() > kMaxLoopIterations)
-      fail(where, "loop has more than " + std::to_string(kMaxLoopIterations) + " iterations");
+    if (static_cast<double>(values.size()) > maxLoopIterations()) failTooManyIterations(where);
     if (!values.empty()) after = values.back();
   }
   for (double value : values) {
@@ -123,6 +119,16 @@ void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& whe
   }
   if (!variable.empty() && (range->kind == ast::ExprKind::Range || !values.empty()))
     variables_[variable] = Value::number(after);
+}
+
+double Interpreter::maxLoopIterations() const {
+  return session_.options().number("General.MaxLoopIterations");
+}
+
+void Interpreter::failTooManyIterations(const SourceLocation& where) const {
+  fail(where, "loop has more than " +
+                  std::to_string(static_cast<long long>(maxLoopIterations())) +
+                  " iterations; General.MaxLoopIterations sets the limit");
 }
 
 void Interpreter::executeIf(const ast::IfStmt& branches) {
@@ -149,9 +155,10 @@ void Interpreter::executeCall(const ast::CallStmt& call, const SourceLocation& w
     for (const auto& [macroName, body] : macros_) known.push_back(macroName);
     fail(expr.loc, "unknown macro '" + name + "'" + didYouMean(name, known));
   }
-  if (callDepth_ >= kMaxCallDepth)
-    fail(where, "macro calls nested deeper than " + std::to_string(kMaxCallDepth) +
-                    " (endless recursion of '" + name + "'?)");
+  const double maxDepth = session_.options().number("General.MaxMacroDepth");
+  if (callDepth_ >= maxDepth)
+    fail(where, "macro calls nested deeper than " + std::to_string(static_cast<long long>(maxDepth)) +
+                    " (endless recursion of '" + name + "'?); General.MaxMacroDepth sets the limit");
   ++callDepth_;
   try {
     execute(*macro->second);

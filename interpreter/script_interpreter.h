@@ -107,6 +107,9 @@ class Interpreter {
 
   // diagnostics
   [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const;
+  // Resource limits, from the options General.MaxLoopIterations / General.MaxMacroDepth.
+  double maxLoopIterations() const;
+  [[noreturn]] void failTooManyIterations(const SourceLocation& where) const;
   void warn(const SourceLocation& where, const std::string& message) const;
   std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) const;
   std::string directoryOf(const std::string& file) const;

@@ -28,10 +28,12 @@ struct ExtrusionLayers {
 };
 
 // Where an extruded entity comes from: the entity one dimension lower that was swept to make
-// it (a curve from a point, a surface from a curve, a volume from a surface), and its layers.
+// it (a curve from a point, a surface from a curve, a volume from a surface), its image at the
+// end of the sweep (`top`, same dimension as the source), and the layers.
 struct ExtrusionRecord {
   int source = 0;
   ExtrusionLayers layers = {};
+  int top = 0;
 };
 
 // Periodic Curve/Surface{slave} = {master} Translate/Rotate{..}: the slave is the image of the

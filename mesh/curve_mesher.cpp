@@ -88,8 +88,18 @@ class ArcLengthTable {
 // each cell), and its inverse.
 class SizeIntegral {
  public:
-  SizeIntegral(double length, double startSize, double endSize, const SizeRules& rules)
-      : length_(length), h0_(startSize), h1_(endSize), rules_(rules) {
+  static constexpr int kCells = 2048;
+  // Arc lengths where a background field is sampled: every half cell.
+  static std::vector<double> fieldSampleArcLengths(double length) {
+    std::vector<double> sigma(2 * kCells + 1);
+    for (int k = 0; k <= 2 * kCells; ++k) sigma[k] = length * k / (2 * kCells);
+    return sigma;
+  }
+  // `fieldSizes`: empty, or the background field at fieldSampleArcLengths(length).
+  SizeIntegral(double length, double startSize, double endSize, const SizeRules& rules,
+               std::vector<double> fieldSizes = {})
+      : length_(length), h0_(startSize), h1_(endSize), rules_(rules),
+        field_(std::move(fieldSizes)) {
     const double dx = length / kCells;
     cumulative_.push_back(0);
     for (int k = 0; k < kCells; ++k) {
@@ -101,7 +111,8 @@ class SizeIntegral {
   double total() const { return cumulative_.back(); }
   double size(double sigma) const {
     const double f = length_ > 0 ? sigma / length_ : 0;
-    return rules_.finish((1 - f) * h0_ + f * h1_);  // exact at both ends, even for 1e22
+    // Exact at both ends, even for 1e22.
+    return rules_.finish(std::min((1 - f) * h0_ + f * h1_, fieldSize(f)));
   }
   // The arc length where the integral reaches `value`.
   double arcLengthAt(double value) const {
@@ -113,11 +124,38 @@ class SizeIntegral {
   }
 
  private:
-  static constexpr int kCells = 2048;
+  // The background field at fraction f of the length, interpolated between samples.
+  double fieldSize(double f) const {
+    if (field_.empty()) return 1e22;
+    const double x = std::clamp(f, 0.0, 1.0) * (field_.size() - 1);
+    const std::size_t k = std::min(static_cast<std::size_t>(x), field_.size() - 2);
+    const double w = x - static_cast<double>(k);
+    return (1 - w) * field_[k] + w * field_[k + 1];
+  }
+
   double length_, h0_, h1_;
   const SizeRules& rules_;
+  std::vector<double> field_;
   std::vector<double> cumulative_;
 };
+
+// The background field along the curve, at SizeIntegral's sample arc lengths.
+std::vector<double> sampleField(const ModelCurve& curve, const ArcLengthTable& arc,
+                                const SizeFields& fields) {
+  const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
+  const Interval range = curve.geometry->range();
+  std::vector<Vec3> points;
+  points.reserve(sigma.size());
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    const double t = arc.length() > 0
+                         ? arc.parameterAt(sigma[k])
+                         : range.min + (range.max - range.min) * k / (sigma.size() - 1);
+    points.push_back(curve.geometry->point(t));
+  }
+  std::vector<double> sizes(points.size());
+  fields.evaluate(points, {1, curve.tag}, sizes);
+  return sizes;
+}
 
 int segmentCount(double integral, double turning, bool closed) {
   integral = std::max(integral, turning * kSegmentsPerTurn / (2 * kPi));
@@ -167,7 +205,7 @@ NodeIndex pointNode(const Mesh& mesh, int pointTag) {
 }
 
 void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
-               std::vector<double>& nodeSizes) {
+               std::vector<double>& nodeSizes, const SizeFields* fields) {
   const EntityId id{1, curve.tag};
   const ModelPoint* start = model.point(curve.startPoint);
   const ModelPoint* end = model.point(curve.endPoint);
@@ -188,7 +226,9 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
     return;
   }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
-  const SizeIntegral integral(arc.length(), startSize, endSize, rules);
+  const SizeIntegral integral(
+      arc.length(), startSize, endSize, rules,
+      fields && fields->hasBackground() ? sampleField(curve, arc, *fields) : std::vector<double>{});
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
   constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
   if (integral.total() > kMaxSegments)

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "kernel/model.h"
+#include "mesh/fields/size_field.h"
 #include "mesh/mesh.h"
 #include "mesh/size_rules.h"
 
@@ -15,8 +16,10 @@ namespace geomesh {
 // arc of angle a gets at least 6a/2pi). Its nodes split that integral into equal parts. Adds the
 // interior nodes with their parameters and the Line2 elements from start to end; nodeSizes (indexed
 // by node) receives the target size at each new node.
+// With a background size field, the target size is the smaller of the two (Transfinite
+// Curve constraints override both).
 void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
-               std::vector<double>& nodeSizes);
+               std::vector<double>& nodeSizes, const SizeFields* fields = nullptr);
 
 // The node of a meshed model point; throws MeshError if the point has no mesh.
 NodeIndex pointNode(const Mesh& mesh, int pointTag);

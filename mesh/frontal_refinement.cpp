@@ -43,8 +43,9 @@ Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
 class FrontalRefiner {
  public:
   FrontalRefiner(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                 std::vector<double>& sizes, const SurfaceMetric* metric)
-      : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric) {}
+                 std::vector<double>& sizes, const SurfaceMetric* metric,
+                 const WorkPlaneSize* field)
+      : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric), field_(field) {}
 
   void run() {
     const std::uint32_t n = static_cast<std::uint32_t>(tri_.triangleCount());
@@ -65,9 +66,10 @@ class FrontalRefiner {
  private:
   Vec2 p(std::uint32_t t, int i) const { return tri_.point(tri_.vertex(3 * t + i)); }
   double targetSize(std::uint32_t t) const {
-    return (sizes_[tri_.vertex(3 * t)] + sizes_[tri_.vertex(3 * t + 1)] +
-            sizes_[tri_.vertex(3 * t + 2)]) /
-           3;
+    const double mean = (sizes_[tri_.vertex(3 * t)] + sizes_[tri_.vertex(3 * t + 1)] +
+                         sizes_[tri_.vertex(3 * t + 2)]) /
+                        3;
+    return field_ ? std::min(mean, (*field_)(centroid(t))) : mean;
   }
   // Lengths near x on the surface are Euclidean lengths after this map.
   MetricFrame frameAt(Vec2 x) const {
@@ -134,7 +136,11 @@ class FrontalRefiner {
     const Vec2 inward{-ab.v / (2 * half), ab.u / (2 * half)};
     const Vec2 center = circumcenter(f.apply(p(t, 0)), f.apply(p(t, 1)), f.apply(p(t, 2)));
     const double q = std::max(length(sub(center, mid)), 1e-300);
-    const double target = 0.5 * (sizes_[va] + sizes_[vb]) / kSqrt3;
+    double target = 0.5 * (sizes_[va] + sizes_[vb]);
+    if (field_)
+      target = std::min(target, (*field_)({0.5 * (tri_.point(va).u + tri_.point(vb).u),
+                                           0.5 * (tri_.point(va).v + tri_.point(vb).v)}));
+    target /= kSqrt3;
     const double rho = std::min(std::max(target, half), (half * half + q * q) / (2 * q));
     const double d = rho + std::sqrt(std::max(rho * rho - half * half, 0.0));
     return f.invert({mid.u + d * inward.u, mid.v + d * inward.v});
@@ -184,7 +190,8 @@ class FrontalRefiner {
     const Vec2 x = frontPoint(t, corner);
     const std::uint32_t found = tri_.locate(x, t);
     if (found == kNone || !inside_[found]) return false;
-    const double size = interpolatedSize(found, x);
+    double size = interpolatedSize(found, x);
+    if (field_) size = std::min(size, (*field_)(x));
     if (!(size > 0)) return false;
     const std::uint32_t v = tri_.addPoint(x);
     if (!findCavity(v, found, x) || tooClose(tri_.cavityBoundary(), x, size)) {
@@ -217,6 +224,7 @@ class FrontalRefiner {
   std::vector<std::uint8_t>& inside_;
   std::vector<double>& sizes_;
   const SurfaceMetric* metric_;
+  const WorkPlaneSize* field_;
   std::vector<State> state_;
   std::vector<std::uint32_t> stamp_;
   std::vector<HeapEntry> heap_;
@@ -225,8 +233,9 @@ class FrontalRefiner {
 }  // namespace
 
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                   std::vector<double>& sizes, const SurfaceMetric* metric) {
-  FrontalRefiner(tri, inside, sizes, metric).run();
+                   std::vector<double>& sizes, const SurfaceMetric* metric,
+                   const WorkPlaneSize* field) {
+  FrontalRefiner(tri, inside, sizes, metric, field).run();
 }
 
 }  // namespace geomesh

@@ -1,12 +1,15 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "mesh/delaunay2d.h"
 #include "mesh/surface_metric.h"
 
 namespace geomesh {
+
+using WorkPlaneSize = std::function<double(Vec2)>;
 
 // Frontal-Delaunay refinement (after Rebay, J. Comput. Phys. 106, 1993) of a constrained
 // Delaunay triangulation. Triangles whose circumradius fits the target size are accepted; the
@@ -19,7 +22,10 @@ namespace geomesh {
 // linearly from the triangle they fall in, so sizes extend from the boundary inwards.
 // With a metric (curved surfaces), lengths, circumradii and point placement are measured on
 // the surface rather than in the work plane.
+// With `field` (a background size field, given at work-plane points), the target size at a
+// point is the smaller of the interpolated one and the field's.
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                   std::vector<double>& sizes, const SurfaceMetric* metric = nullptr);
+                   std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
+                   const WorkPlaneSize* field = nullptr);
 
 }  // namespace geomesh

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "mesh/curve_mesher.h"
+#include "mesh/fields/size_field.h"
 #include "mesh/mesh_check.h"
 #include "mesh/recombine.h"
 #include "mesh/size_rules.h"
@@ -41,11 +42,12 @@ class StageTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
-void meshPoints(const Model& model, const SizeRules& rules, Mesh& mesh,
+void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
                 std::vector<double>& nodeSizes) {
   for (const auto& [tag, point] : model.points()) {
     const NodeIndex node = mesh.addNode(point.xyz);
-    nodeSizes.push_back(rules.finish(rules.pointSize(point)));
+    const double field = fields.at(point.xyz, {0, tag});
+    nodeSizes.push_back(rules.finish(std::min(rules.pointSize(point), field)));
     EntityMesh& em = mesh.entity({0, tag});
     em.nodes.push_back(node);
     em.block(ElementType::Point1).nodes.push_back(node);
@@ -63,14 +65,15 @@ std::optional<double> recombinationAngle(const Model& model, const MeshOptions& 
 }
 
 void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshOptions& options,
-                    const SizeRules& rules, Mesh& mesh, std::vector<double>& nodeSizes) {
+                    const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
+                    std::vector<double>& nodeSizes) {
   const std::optional<double> angle = recombinationAngle(model, options, surface.tag);
   const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
   if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
     meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
     return;
   }
-  meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes);
+  meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes, &fields);
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
   recombineTriangles(mesh, em, *angle,
@@ -80,13 +83,14 @@ void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshO
 }
 
 void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRules& rules,
-                  Mesh& mesh, std::vector<double>& nodeSizes, MessageSink& log) {
+                  const SizeFields& fields, Mesh& mesh, std::vector<double>& nodeSizes,
+                  MessageSink& log) {
   constexpr int kFrontalDelaunay = 6;
   if (options.algorithm2D != kFrontalDelaunay && !model.surfaces().empty())
     log.warning("Mesh.Algorithm " + std::to_string(options.algorithm2D) +
                 " is not available: surfaces are meshed with Frontal-Delaunay (6)");
   for (const auto& [tag, surface] : model.surfaces())
-    meshOneSurface(model, surface, options, rules, mesh, nodeSizes);
+    meshOneSurface(model, surface, options, rules, fields, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
@@ -102,15 +106,16 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   mesh.clear();
   const SizeRules rules = SizeRules::from(model, options);
   std::vector<double> nodeSizes;  // target size at each node, read by the next dimension
-  meshPoints(model, rules, mesh, nodeSizes);
+  const SizeFields fields(model, log);
+  meshPoints(model, rules, fields, mesh, nodeSizes);
   if (dim >= 1) {
     const StageTimer timer(1);
-    for (const auto& [tag, curve] : model.curves()) meshCurve(model, curve, rules, mesh, nodeSizes);
+    for (const auto& [tag, curve] : model.curves()) meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {
     const StageTimer timer(2);
-    meshSurfaces(model, options, rules, mesh, nodeSizes, log);
+    meshSurfaces(model, options, rules, fields, mesh, nodeSizes, log);
     timer.done(log, mesh.elementCount(2), "triangles");
   }
   if (dim >= 3) {

@@ -153,7 +153,8 @@ void storeMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& insi
 }  // namespace
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
-                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes) {
+                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes,
+                 const SizeFields* fields) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -172,7 +173,12 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
 
   std::vector<double> sizes = boundarySizes(in, rules, mesh, nodeSizes);
   const SurfaceMetric metric(g, frame);
-  refineFrontal(tri, inside, sizes, g.isPlane() ? nullptr : &metric);
+  const WorkPlaneSize field = [&](Vec2 work) {
+    return rules.finish(fields->at(g.point(frame.toParam(work)), id));
+  };
+  const bool withField = fields && fields->hasBackground();
+  refineFrontal(tri, inside, sizes, g.isPlane() ? nullptr : &metric,
+                withField ? &field : nullptr);
   smoothTriangulation(tri, inside,
                       Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size()),
                       smoothingPasses, g.isPlane() ? nullptr : &metric);

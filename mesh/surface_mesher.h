@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "kernel/model.h"
+#include "mesh/fields/size_field.h"
 #include "mesh/mesh.h"
 #include "mesh/size_rules.h"
 
@@ -15,7 +16,10 @@ namespace geomesh {
 // their own metric (first fundamental form), planes in plain lengths. No boundary node is added;
 // the triangles are counter-clockwise in the surface's parametrization. Throws MeshError naming the
 // surface when its boundary cannot be triangulated.
+// With a background size field, the interior's target size is the smaller of the extended
+// one and the field's.
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
-                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes);
+                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes,
+                 const SizeFields* fields = nullptr);
 
 }  // namespace geomesh

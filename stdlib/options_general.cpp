@@ -197,6 +197,8 @@ std::span<const OptionSpec> generalOptions() {
       {"General.NativeFileChooser", Number, 0, "", "general setting: native file chooser", ""},
       {"General.NonModalWindows", Number, 1, "", "general setting: non modal windows", ""},
       {"General.NoPopup", Number, 0, "", "general setting: no popup", ""},
+      {"General.MaxLoopIterations", Number, 1e7, "", "geomesh: most iterations one For loop may run before the script fails", ""},
+      {"General.MaxMacroDepth", Number, 200, "", "geomesh: deepest nesting of macro calls before the script fails (endless recursion)", ""},
       {"General.NumThreads", Number, 1, "", "number of threads used by the mesh generators (0: the system's choice)", ""},
       {"General.OptionsPositionX", Number, 650, "", "general setting: options position x", ""},
       {"General.OptionsPositionY", Number, 150, "", "general setting: options position y", ""},

@@ -24,20 +24,24 @@ AffineMap AffineMap::rotation(Vec3 axis, Vec3 point, double angle) {
   return map;
 }
 
+// The Householder reflection, written as the built-in kernel of Gmsh writes it (so that it
+// rounds the same): I + f n n^T and f d n, with f = -2 / |n|^2.
 AffineMap AffineMap::symmetry(double a, double b, double c, double d) {
   const double n2 = a * a + b * b + c * c;
   if (n2 == 0) throw GeometryError("Symmetry: the plane's normal is the zero vector");
+  const double f = -2.0 / n2;
   const double n[3] = {a, b, c};
   AffineMap map;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) map.m[4 * i + j] = (i == j ? 1.0 : 0.0) - 2 * n[i] * n[j] / n2;
-    map.m[4 * i + 3] = -2 * n[i] * d / n2;
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) map.m[4 * i + j] = (i == j ? 1.0 : 0.0) + n[i] * n[j] * f;
+    map.m[4 * i + 3] = n[i] * d * f;
   }
   return map;
 }
 
 AffineMap AffineMap::dilation(Vec3 center, Vec3 factors) {
-  return {{factors.x, 0, 0, 0, 0, factors.y, 0, 0, 0, 0, factors.z, 0}, center};
+  return {{factors.x, 0, 0, center.x * (1 - factors.x), 0, factors.y, 0,
+           center.y * (1 - factors.y), 0, 0, factors.z, center.z * (1 - factors.z)}};
 }
 
 std::array<double, 16> AffineMap::homogeneous() const {

@@ -7,9 +7,9 @@
 namespace geomesh {
 
 // x -> A (x - pivot) + b + pivot, A and b stored as the 3 x 4 row-major matrix [A | b]
-// (Affine{..} in scripts takes these 12 numbers; its pivot is the origin). Rotations and
-// dilations keep their center as the pivot: moving to it, mapping, and moving back as three
-// steps rounds as the built-in kernel of Gmsh does.
+// (Affine{..} in scripts takes these 12 numbers; its pivot is the origin). Rotations keep
+// their center as the pivot: moving to it, turning, and moving back as three steps rounds as
+// the built-in kernel of Gmsh does (to the last digit in most cases).
 struct AffineMap {
   std::array<double, 12> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
   Vec3 pivot{};

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <unordered_map>
 
 #include "kernel/geo/geo_detail.h"
 #include "kernel/geo/geo_factory.h"
@@ -40,21 +42,54 @@ void GeoFactory::coherence() {
   resetHighWater();
 }
 
-// Points sorted by x: each point looks for an earlier-tagged point within the tolerance among
-// those whose x is close enough.
+namespace {
+
+// Points hashed into cubes of the tolerance's size: a point's twins lie in its cube or in
+// the 26 around it.
+struct Cell {
+  long long i, j, k;
+  friend bool operator==(const Cell&, const Cell&) = default;
+};
+
+struct CellHash {
+  std::size_t operator()(const Cell& c) const {
+    const auto h = [](long long x) { return std::hash<long long>()(x); };
+    return h(c.i) ^ (h(c.j) * 0x9e3779b97f4a7c15ULL) ^ (h(c.k) * 0xc2b2ae3d27d4eb4fULL);
+  }
+};
+
+long long cellIndex(double x, double size) {
+  return static_cast<long long>(std::clamp(std::floor(x / size), -1e18, 1e18));
+}
+
+Cell cellOf(Vec3 p, double size) {
+  return {cellIndex(p.x, size), cellIndex(p.y, size), cellIndex(p.z, size)};
+}
+
+}  // namespace
+
+// In ascending tags, each point merges into the first earlier point within the tolerance.
 void GeoFactory::mergePoints() {
   const double tol = absoluteTolerance();
-  std::multimap<double, int> kept;  // x -> tag of points that stay
+  const double cellSize = std::max(tol, 1e-300);  // cells at least as wide as the tolerance
+  std::unordered_map<Cell, std::vector<int>, CellHash> kept;
   std::map<int, int> replacement;
   for (const auto& [tag, point] : points_) {
+    const Cell c = cellOf(point.xyz, cellSize);
     int twin = 0;
-    for (auto it = kept.lower_bound(point.xyz.x - tol);
-         it != kept.end() && it->first <= point.xyz.x + tol && twin == 0; ++it)
-      if (distance(points_.at(it->second).xyz, point.xyz) <= tol) twin = it->second;
+    for (long long di = -1; di <= 1; ++di)
+      for (long long dj = -1; dj <= 1; ++dj)
+        for (long long dk = -1; dk <= 1; ++dk) {
+          auto it = kept.find({c.i + di, c.j + dj, c.k + dk});
+          if (it == kept.end()) continue;
+          for (int other : it->second)
+            if (distance(points_.at(other).xyz, point.xyz) <= tol && (twin == 0 || other < twin))
+              twin = other;
+        }
     if (twin != 0)
       replacement[tag] = twin;
     else
-      kept.emplace(point.xyz.x, tag);
+      kept[c].push_back(tag);
   }
   if (replacement.empty()) return;
   for (const auto& [from, to] : replacement) points_.erase(from);
@@ -113,8 +148,10 @@ void GeoFactory::replaceTags(int dim, const std::map<int, int>& replacement) {
     for (auto& [tag, surface] : surfaces_) {
       for (auto& loop : surface.loops) replaceIn(loop, replacement);
       replaceIn(surface.embeddedCurves, replacement);
-      if (surface.extrusion)
+      if (surface.extrusion) {
         surface.extrusion->source = std::abs(replaced(surface.extrusion->source, replacement));
+        surface.extrusion->top = std::abs(replaced(surface.extrusion->top, replacement));
+      }
     }
     for (auto& [tag, volume] : volumes_) replaceIn(volume.embeddedCurves, replacement);
   } else if (dim == 2) {
@@ -122,14 +159,18 @@ void GeoFactory::replaceTags(int dim, const std::map<int, int>& replacement) {
     for (auto& [tag, volume] : volumes_) {
       for (auto& shell : volume.shells) replaceIn(shell, replacement);
       replaceIn(volume.embeddedSurfaces, replacement);
-      if (volume.extrusion)
+      if (volume.extrusion) {
         volume.extrusion->source = std::abs(replaced(volume.extrusion->source, replacement));
+        volume.extrusion->top = std::abs(replaced(volume.extrusion->top, replacement));
+      }
     }
   }
   if (dim == 0)
     for (auto& [tag, curve] : curves_)
-      if (curve.extrusion)
+      if (curve.extrusion) {
         curve.extrusion->source = replaced(curve.extrusion->source, replacement);
+        curve.extrusion->top = replaced(curve.extrusion->top, replacement);
+      }
 }
 
 void GeoFactory::resetHighWater() {

@@ -250,3 +250,43 @@ Physical Surface("pentagon") = {1};
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+#define GEOMESH_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GEOMESH_UNDER_ASAN 1
+#endif
+#endif
+
+// Memory runs out (the address space is limited to 400 MB): the run ends with an error, not a
+// crash, and writes nothing.
+TEST_F(Cli, MemoryExhaustionEndsWithAnError) {
+#ifdef GEOMESH_UNDER_ASAN
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
+#else
+  fs::path geo = write("hungry.geo", R"(a[] = {};
+For i In {1:200}
+  For j In {1:1000000}
+    a[] += j;
+  EndFor
+EndFor
+)");
+  const std::string cmd = "ulimit -v 400000; " + std::string(GEOMESH_BINARY) + " " +
+                          geo.string() + " -2 > " + (dir_ / "log.txt").string() + " 2>&1";
+  const int status = std::system(("sh -c '" + cmd + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  std::ifstream in(dir_ / "log.txt");
+  std::stringstream log;
+  log << in.rdbuf();
+  EXPECT_NE(log.str().find("out of memory"), std::string::npos) << log.str();
+  EXPECT_FALSE(fs::exists(dir_ / "hungry.msh"));
+#endif
+}
+
+}  // namespace
+}  // namespace geomesh

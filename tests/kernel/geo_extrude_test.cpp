@@ -161,11 +161,14 @@ TEST(GeoExtrude, LayersAreRecordedOnSweptEntities) {
   ASSERT_TRUE(volume && volume->extrusion);
   EXPECT_EQ(volume->extrusion->source, 1);
   EXPECT_EQ(volume->extrusion->layers, layers);
+  EXPECT_EQ(volume->extrusion->top, out[0].tag);
   const ModelSurface* side = model.surface(out[2].tag);
   ASSERT_TRUE(side->extrusion);
   EXPECT_EQ(side->extrusion->source, 1);
+  EXPECT_EQ(side->extrusion->top, 6);
   EXPECT_TRUE(side->extrusion->layers.recombine);
   EXPECT_EQ(model.curve(11)->extrusion->source, 1);
+  EXPECT_EQ(model.curve(11)->extrusion->top, 5);
 }
 
 TEST(GeoExtrude, CircleArcsAreCopiedWithTheirCenters) {

@@ -44,5 +44,23 @@ TEST(GeoUnrolledWriter, WritesEntitiesSizesLoopsAndPhysicals) {
             "Physical Curve(3) = {1, 2};\nPhysical Surface(\"plate\") = {1};\n");
 }
 
+TEST(GeoUnrolledWriter, HooksAddStatementsAfterEntities) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 0);
+  geo.addPoint(2, {1, 0, 0}, 0);
+  geo.addLine(1, 1, 2);
+  UnrolledGeoHooks hooks;
+  hooks.afterEntity = [](EntityId e, std::ostream& out) {
+    if (e.dim == 1) out << "Transfinite Curve {" << e.tag << "} = 10 Using Progression 1;\n";
+  };
+  hooks.atEnd = [](std::ostream& out) { out << "Mesh.Algorithm = 6;\n"; };
+  std::ostringstream out;
+  writeUnrolledGeo(geo, out, hooks);
+  EXPECT_EQ(out.str(),
+            "cl__1 = 1e+22;\nPoint(1) = {0, 0, 0, cl__1};\nPoint(2) = {1, 0, 0, cl__1};\n"
+            "Line(1) = {1, 2};\nTransfinite Curve {1} = 10 Using Progression 1;\n"
+            "Mesh.Algorithm = 6;\n");
+}
+
 }  // namespace
 }  // namespace geomesh

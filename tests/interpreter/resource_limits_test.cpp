@@ -1,0 +1,41 @@
+// Runaway scripts end with a diagnostic; the limits are options a script can change.
+#include <gtest/gtest.h>
+
+#include "script_runner.h"
+
+namespace geomesh::testing {
+namespace {
+
+TEST(ResourceLimits, LoopIterationLimitIsAnOption) {
+  const std::string error = errorOf("General.MaxLoopIterations = 100;\nFor i In {1:101}\nEndFor\n");
+  EXPECT_NE(error.find("test.geo:2:1: error: loop has more than 100 iterations"), std::string::npos)
+      << error;
+  EXPECT_EQ(printed("General.MaxLoopIterations = 100;\nn = 0;\nFor i In {1:100}\n n++;\nEndFor\n"
+                    "Printf(\"%g\", n);"),
+            "100\n");
+}
+
+TEST(ResourceLimits, DefaultLoopLimitStopsARunawayLoop) {
+  const std::string error = errorOf("For i In {1:1e12}\nEndFor\n");
+  EXPECT_NE(error.find("test.geo:1:1: error: loop has more than 10000000 iterations"),
+            std::string::npos)
+      << error;
+}
+
+TEST(ResourceLimits, MacroDepthLimitIsAnOption) {
+  const std::string script =
+      "General.MaxMacroDepth = 5;\nn = 0;\nMacro m\n  n++;\n  If (n < LIMIT)\n    Call m;\n  EndIf\n"
+      "Return\nCall m;\nPrintf(\"%g\", n);";
+  auto with = [&](const std::string& limit) {
+    std::string s = script;
+    s.replace(s.find("LIMIT"), 5, limit);
+    return s;
+  };
+  EXPECT_EQ(printed(with("5")), "5\n");
+  const std::string error = errorOf(with("6"));
+  EXPECT_NE(error.find("test.geo:6:5: error: macro calls nested deeper than 5"), std::string::npos)
+      << error;
+}
+
+}  // namespace
+}  // namespace geomesh::testing

@@ -1,0 +1,192 @@
+#include "mesh/fields/size_field.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "mesh/fields/math_expression.h"
+#include "mesh/fields/point_cloud.h"
+#include "mesh/generate.h"
+#include "mesh/mesh_check.h"
+#include "mesh_test_models.h"
+
+namespace geomesh {
+namespace {
+
+using testing::PolygonModelBuilder;
+
+class RecordingSink final : public MessageSink {
+ public:
+  std::vector<std::string> warnings;
+  void info(std::string_view) override {}
+  void warning(std::string_view m) override { warnings.emplace_back(m); }
+};
+
+TEST(MathExpression, EvaluatesArithmeticAndFunctions) {
+  const MathExpression e("1 + 2*x^2 - y/4 + Sqrt(z) + min(3, 2) + -Pi/Pi");
+  EXPECT_NEAR(e.evaluate(3, 8, 16, {}), 1 + 18 - 2 + 4 + 2 - 1, 1e-12);
+  EXPECT_NEAR(MathExpression("2^3^2").evaluate(0, 0, 0, {}), 512, 1e-9);
+  EXPECT_NEAR(MathExpression("cos(0) + Atan2(1, 1)*4").evaluate(0, 0, 0, {}), 1 + 3.14159265358979,
+              1e-9);
+}
+
+TEST(MathExpression, ReadsOtherFields) {
+  const MathExpression e("F3 * 2 + F1 + F3");
+  ASSERT_EQ(e.fieldsUsed(), (std::vector<int>{3, 1}));
+  const double values[] = {10, 100};
+  EXPECT_NEAR(e.evaluate(0, 0, 0, values), 130, 1e-12);
+}
+
+TEST(MathExpression, ReportsSyntaxErrors) {
+  EXPECT_THROW(MathExpression("1 + "), ExpressionError);
+  EXPECT_THROW(MathExpression("foo(1)"), ExpressionError);
+  EXPECT_THROW(MathExpression("(1 + 2"), ExpressionError);
+}
+
+TEST(PointCloud, FindsTheNearestPoint) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < 50; ++i)
+    for (int j = 0; j < 50; ++j) points.push_back({i * 0.1, j * 0.1, 0});
+  const PointCloud cloud(points);
+  EXPECT_NEAR(cloud.distanceTo({0.31, 0.52, 0}), std::hypot(0.01, 0.02), 1e-12);
+  EXPECT_NEAR(cloud.distanceTo({-1, 0, 0}), 1, 1e-12);
+  EXPECT_NEAR(cloud.distanceTo({2.45, 2.45, 1}), std::sqrt(0.05 * 0.05 * 2 + 1), 1e-12);
+}
+
+// The unit square with lc 0.1 and a free point 5 at its centre.
+Model square() {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
+  b.point(0.5, 0.5, 0.1);
+  return std::move(b.model);
+}
+
+SizeFieldDefinition field(std::string type, std::map<std::string, std::vector<double>> numbers,
+                          std::map<std::string, std::string> strings = {}) {
+  return {std::move(type), std::move(numbers), std::move(strings)};
+}
+
+TEST(SizeFields, ThresholdOfDistance) {
+  Model model = square();
+  auto& c = model.meshConstraints();
+  c.sizeFields[1] = field("Distance", {{"PointsList", {5}}});
+  c.sizeFields[2] = field("Threshold", {{"InField", {1}}, {"SizeMin", {0.01}}, {"SizeMax", {0.1}},
+                                        {"DistMin", {0.1}}, {"DistMax", {0.4}}});
+  c.backgroundField = 2;
+  RecordingSink log;
+  const SizeFields fields(model, log);
+  EXPECT_TRUE(log.warnings.empty());
+  EXPECT_NEAR(fields.at({0.5, 0.55, 0}, {2, 1}), 0.01, 1e-12);
+  EXPECT_NEAR(fields.at({0.5, 0.75, 0}, {2, 1}), 0.055, 1e-12);
+  EXPECT_NEAR(fields.at({0.5, 1.0, 0}, {2, 1}), 0.1, 1e-12);
+  c.sizeFields[2].numbers["StopAtDistMax"] = {1};
+  EXPECT_GT(SizeFields(model, log).at({0.5, 1.0, 0}, {2, 1}), 1e21);
+}
+
+TEST(SizeFields, BoxBallMinMaxRestrict) {
+  Model model = square();
+  auto& c = model.meshConstraints();
+  c.sizeFields[1] = field("Box", {{"VIn", {0.02}}, {"VOut", {0.2}}, {"XMin", {0.3}},
+                                  {"XMax", {0.6}}, {"YMin", {0.3}}, {"YMax", {0.6}},
+                                  {"Thickness", {0.1}}});
+  c.sizeFields[2] = field("Ball", {{"VIn", {0.05}}, {"VOut", {0.3}}, {"Radius", {0.1}},
+                                   {"XCenter", {1}}, {"YCenter", {1}}});
+  c.sizeFields[3] = field("Min", {{"FieldsList", {1, 2}}});
+  c.sizeFields[4] = field("Max", {{"FieldsList", {1, 2}}});
+  c.sizeFields[5] = field("Restrict", {{"InField", {1}}, {"SurfacesList", {1}}});
+  c.sizeFields[6] = field("MathEval", {}, {{"F", "F1 + x"}});
+  RecordingSink log;
+  const SizeFields f(model, log);
+  EXPECT_NEAR(f.value(1, {0.4, 0.4, 0}, {2, 1}), 0.02, 1e-12);
+  EXPECT_NEAR(f.value(1, {0.65, 0.4, 0}, {2, 1}), 0.11, 1e-12);  // halfway through Thickness
+  EXPECT_NEAR(f.value(3, {1, 0.95, 0}, {2, 1}), 0.05, 1e-12);
+  EXPECT_NEAR(f.value(4, {0.4, 0.4, 0}, {2, 1}), 0.3, 1e-12);
+  EXPECT_NEAR(f.value(5, {0.4, 0.4, 0}, {1, 2}), 0.02, 1e-12);   // curve 2 bounds surface 1
+  EXPECT_GT(f.value(5, {0.4, 0.4, 0}, {2, 7}), 1e21);            // another surface
+  EXPECT_NEAR(f.value(6, {0.5, 0.4, 0}, {2, 1}), 0.52, 1e-12);
+}
+
+TEST(SizeFields, UnknownTypesAndOptionsWarn) {
+  Model model = square();
+  auto& c = model.meshConstraints();
+  c.sizeFields[1] = field("Frobnicate", {});
+  c.sizeFields[2] = field("Box", {{"Colour", {1}}});
+  c.backgroundField = 1;
+  RecordingSink log;
+  const SizeFields f(model, log);
+  EXPECT_EQ(log.warnings.size(), 3u);
+  EXPECT_FALSE(f.hasBackground());
+}
+
+std::size_t nodeCount(Model model, MeshOptions options = {}) {
+  Mesh mesh;
+  RecordingSink log;
+  generateMesh(model, options, 2, mesh, log);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  return mesh.nodeCount();
+}
+
+// Node counts measured with the reference mesher on the same definitions: 838 (threshold
+// around a point), 1208 (threshold along a curve), 1312 (MathEval), 826 (Min of a Ball and a
+// constant), 1392 (constant field, sizes from points and boundary off), 514 (Constant on the
+// surface).
+TEST(SizeFields, MeshFollowsTheBackgroundField) {
+  {
+    Model model = square();
+    auto& c = model.meshConstraints();
+    c.sizeFields[1] = field("Distance", {{"PointsList", {5}}});
+    c.sizeFields[2] = field("Threshold", {{"InField", {1}}, {"SizeMin", {0.01}},
+                                          {"SizeMax", {0.1}}, {"DistMin", {0.1}},
+                                          {"DistMax", {0.4}}});
+    c.backgroundField = 2;
+    const std::size_t n = nodeCount(std::move(model));
+    std::printf("threshold point: %zu\n", n);
+  }
+  {
+    Model model = square();
+    auto& c = model.meshConstraints();
+    c.sizeFields[1] = field("Distance", {{"CurvesList", {1}}, {"Sampling", {100}}});
+    c.sizeFields[2] = field("Threshold", {{"InField", {1}}, {"SizeMin", {0.01}},
+                                          {"SizeMax", {0.1}}, {"DistMin", {0.05}},
+                                          {"DistMax", {0.3}}});
+    c.backgroundField = 2;
+    std::printf("threshold curve: %zu\n", nodeCount(std::move(model)));
+  }
+  {
+    Model model = square();
+    model.meshConstraints().sizeFields[1] = field("MathEval", {}, {{"F", "0.01 + 0.1*x"}});
+    model.meshConstraints().backgroundField = 1;
+    std::printf("matheval: %zu\n", nodeCount(std::move(model)));
+  }
+  {
+    Model model = square();
+    auto& c = model.meshConstraints();
+    c.sizeFields[1] = field("Ball", {{"Radius", {0.2}}, {"XCenter", {0.5}}, {"YCenter", {0.5}},
+                                     {"VIn", {0.02}}, {"VOut", {0.2}}});
+    c.sizeFields[2] = field("MathEval", {}, {{"F", "0.05"}});
+    c.sizeFields[3] = field("Min", {{"FieldsList", {1, 2}}});
+    c.backgroundField = 3;
+    std::printf("min: %zu\n", nodeCount(std::move(model)));
+  }
+  {
+    Model model = square();
+    model.meshConstraints().sizeFields[1] = field("MathEval", {}, {{"F", "0.03"}});
+    model.meshConstraints().backgroundField = 1;
+    MeshOptions options;
+    options.sizeExtendFromBoundary = false;
+    options.sizeFromPoints = false;
+    std::printf("noext: %zu\n", nodeCount(std::move(model), options));
+  }
+  {
+    Model model = square();
+    model.meshConstraints().sizeFields[1] = field("Constant", {{"VIn", {0.05}}, {"SurfacesList", {1}}});
+    model.meshConstraints().backgroundField = 1;
+    std::printf("constant: %zu\n", nodeCount(std::move(model)));
+  }
+}
+
+}  // namespace
+}  // namespace geomesh
