@@ -85,7 +85,7 @@ def main():
     parser.add_argument("cases", nargs="*", default=list(CASES))
     parser.add_argument("--geomesh", default=str(GEOMESH), help="the geomesh executable")
     args = parser.parse_args()
-    geomesh = Path(args.geomesh)
+    geomesh = Path(args.geomesh).resolve()
     if not geomesh.exists():
         sys.exit(f"build geomesh first ({geomesh} is missing): bash scripts/setup.sh")
     python = ensure_reference()

@@ -48,6 +48,7 @@ class FrontalRefiner {
       : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric), field_(field) {}
 
   void run() {
+    const std::uint32_t firstNew = static_cast<std::uint32_t>(sizes_.size());
     const std::uint32_t n = static_cast<std::uint32_t>(tri_.triangleCount());
     state_.assign(n, State::Outside);
     stamp_.assign(n, 0);
@@ -61,6 +62,9 @@ class FrontalRefiner {
       if (stamp_[e.triangle] != e.stamp || state_[e.triangle] != State::Active) continue;
       if (!advanceFront(e.triangle)) state_[e.triangle] = State::Accepted;
     }
+    if (field_)
+      for (std::uint32_t v = firstNew; v < sizes_.size(); ++v)
+        sizes_[v] = std::min(sizes_[v], (*field_)(tri_.point(v)));
   }
 
  private:
@@ -190,15 +194,17 @@ class FrontalRefiner {
     const Vec2 x = frontPoint(t, corner);
     const std::uint32_t found = tri_.locate(x, t);
     if (found == kNone || !inside_[found]) return false;
-    double size = interpolatedSize(found, x);
-    if (field_) size = std::min(size, (*field_)(x));
+    // sizes_ keeps the sizes extended from the boundary, so that a field's small sizes do
+    // not spread by interpolation; the field applies where a size is used.
+    const double extended = interpolatedSize(found, x);
+    const double size = field_ ? std::min(extended, (*field_)(x)) : extended;
     if (!(size > 0)) return false;
     const std::uint32_t v = tri_.addPoint(x);
     if (!findCavity(v, found, x) || tooClose(tri_.cavityBoundary(), x, size)) {
       tri_.removeLastPoint();
       return false;
     }
-    sizes_.push_back(size);
+    sizes_.push_back(extended);
     tri_.commitCavity(v);
     updateAfterInsertion();
     return true;

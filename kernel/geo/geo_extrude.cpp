@@ -93,9 +93,7 @@ std::vector<EntityId> GeoFactory::extrudePoint(int tag, const ExtrusionMotion& m
 }
 
 void GeoFactory::moveCopy(EntityId copy, const ExtrusionMotion& motion) {
-  std::vector<int> moved;
-  collectPoints(copy, moved);
-  for (int p : moved) {
+  for (int p : pointsUnder({copy})) {
     Vec3& xyz = points_.at(p).xyz;
     xyz = motion.apply(xyz, 1);
     bounds_.include(xyz);

@@ -213,6 +213,7 @@ class GeoFactory {
   // geo_transform.cpp
   void requireShape(EntityId shape, const char* operation) const;
   void collectPoints(EntityId shape, std::vector<int>& out) const;
+  std::vector<int> pointsUnder(const std::vector<EntityId>& shapes) const;  // sorted, unique
   int copyPoint(int tag);
   int copyCurve(int signedTag);
   static std::vector<int> reversedPoints(const Curve& c);

@@ -35,14 +35,17 @@ void GeoFactory::requireShape(EntityId shape, const char* operation) const {
          " is not defined");
 }
 
-// Every point the shape's geometry depends on: the control points of its curves included.
+// Every point the shape's geometry depends on: the control points of its curves included
+// (appended with repeats; see pointsUnder).
 void GeoFactory::collectPoints(EntityId shape, std::vector<int>& out) const {
   const int tag = std::abs(shape.tag);
   switch (shape.dim) {
-    case 0: appendOnce(out, tag); break;
-    case 1:
-      for (int p : curves_.at(tag).points) appendOnce(out, p);
+    case 0: out.push_back(tag); break;
+    case 1: {
+      const auto& points = curves_.at(tag).points;
+      out.insert(out.end(), points.begin(), points.end());
       break;
+    }
     case 2:
       for (const auto& loop : surfaces_.at(tag).loops)
         for (int c : loop) collectPoints({1, c}, out);
@@ -55,10 +58,17 @@ void GeoFactory::collectPoints(EntityId shape, std::vector<int>& out) const {
   }
 }
 
+std::vector<int> GeoFactory::pointsUnder(const std::vector<EntityId>& shapes) const {
+  std::vector<int> points;
+  for (EntityId shape : shapes) collectPoints(shape, points);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
 void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap& map) {
   for (EntityId shape : shapes) requireShape(shape, "Transformation");
-  std::vector<int> moved;
-  for (EntityId shape : shapes) collectPoints(shape, moved);
+  const std::vector<int> moved = pointsUnder(shapes);
   for (int p : moved) {
     ModelPoint& point = points_.at(p);
     point.xyz = map.apply(point.xyz);
@@ -71,7 +81,8 @@ void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap&
     for (auto& [tag, surface] : surfaces_) {
       std::vector<int> own;
       collectPoints({2, tag}, own);
-      if (std::any_of(own.begin(), own.end(), [&](int p) { return movedSet.contains(p); }))
+      if (surface.sweep &&
+          std::any_of(own.begin(), own.end(), [&](int p) { return movedSet.contains(p); }))
         surface.sweep.reset();
     }
   }

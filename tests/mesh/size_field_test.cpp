@@ -129,63 +129,66 @@ std::size_t nodeCount(Model model, MeshOptions options = {}) {
   return mesh.nodeCount();
 }
 
-// Node counts measured with the reference mesher on the same definitions: 838 (threshold
-// around a point), 1208 (threshold along a curve), 1312 (MathEval), 826 (Min of a Ball and a
-// constant), 1392 (constant field, sizes from points and boundary off), 514 (Constant on the
-// surface).
-TEST(SizeFields, MeshFollowsTheBackgroundField) {
-  {
-    Model model = square();
-    auto& c = model.meshConstraints();
-    c.sizeFields[1] = field("Distance", {{"PointsList", {5}}});
-    c.sizeFields[2] = field("Threshold", {{"InField", {1}}, {"SizeMin", {0.01}},
-                                          {"SizeMax", {0.1}}, {"DistMin", {0.1}},
-                                          {"DistMax", {0.4}}});
-    c.backgroundField = 2;
-    const std::size_t n = nodeCount(std::move(model));
-    std::printf("threshold point: %zu\n", n);
-  }
-  {
-    Model model = square();
-    auto& c = model.meshConstraints();
-    c.sizeFields[1] = field("Distance", {{"CurvesList", {1}}, {"Sampling", {100}}});
-    c.sizeFields[2] = field("Threshold", {{"InField", {1}}, {"SizeMin", {0.01}},
-                                          {"SizeMax", {0.1}}, {"DistMin", {0.05}},
-                                          {"DistMax", {0.3}}});
-    c.backgroundField = 2;
-    std::printf("threshold curve: %zu\n", nodeCount(std::move(model)));
-  }
-  {
-    Model model = square();
-    model.meshConstraints().sizeFields[1] = field("MathEval", {}, {{"F", "0.01 + 0.1*x"}});
-    model.meshConstraints().backgroundField = 1;
-    std::printf("matheval: %zu\n", nodeCount(std::move(model)));
-  }
-  {
-    Model model = square();
-    auto& c = model.meshConstraints();
-    c.sizeFields[1] = field("Ball", {{"Radius", {0.2}}, {"XCenter", {0.5}}, {"YCenter", {0.5}},
-                                     {"VIn", {0.02}}, {"VOut", {0.2}}});
-    c.sizeFields[2] = field("MathEval", {}, {{"F", "0.05"}});
-    c.sizeFields[3] = field("Min", {{"FieldsList", {1, 2}}});
-    c.backgroundField = 3;
-    std::printf("min: %zu\n", nodeCount(std::move(model)));
-  }
-  {
-    Model model = square();
-    model.meshConstraints().sizeFields[1] = field("MathEval", {}, {{"F", "0.03"}});
-    model.meshConstraints().backgroundField = 1;
-    MeshOptions options;
-    options.sizeExtendFromBoundary = false;
-    options.sizeFromPoints = false;
-    std::printf("noext: %zu\n", nodeCount(std::move(model), options));
-  }
-  {
-    Model model = square();
-    model.meshConstraints().sizeFields[1] = field("Constant", {{"VIn", {0.05}}, {"SurfacesList", {1}}});
-    model.meshConstraints().backgroundField = 1;
-    std::printf("constant: %zu\n", nodeCount(std::move(model)));
-  }
+// Within 8% of the node count the reference mesher gives for the same definitions.
+void expectNodesNear(std::size_t actual, double reference) {
+  EXPECT_GT(static_cast<double>(actual), 0.92 * reference);
+  EXPECT_LT(static_cast<double>(actual), 1.08 * reference);
+}
+
+Model withThreshold(std::map<std::string, std::vector<double>> distance, double distMin,
+                    double distMax) {
+  Model model = square();
+  auto& c = model.meshConstraints();
+  c.sizeFields[1] = field("Distance", std::move(distance));
+  c.sizeFields[2] = field("Threshold", {{"InField", {1}}, {"SizeMin", {0.01}}, {"SizeMax", {0.1}},
+                                        {"DistMin", {distMin}}, {"DistMax", {distMax}}});
+  c.backgroundField = 2;
+  return model;
+}
+
+TEST(SizeFields, ThresholdAroundAPointMatchesTheReference) {
+  expectNodesNear(nodeCount(withThreshold({{"PointsList", {5}}}, 0.1, 0.4)), 838);
+}
+
+TEST(SizeFields, ThresholdAlongACurveMatchesTheReference) {
+  expectNodesNear(
+      nodeCount(withThreshold({{"CurvesList", {1}}, {"Sampling", {100}}}, 0.05, 0.3)), 1208);
+}
+
+TEST(SizeFields, MathEvalMatchesTheReference) {
+  Model model = square();
+  model.meshConstraints().sizeFields[1] = field("MathEval", {}, {{"F", "0.01 + 0.1*x"}});
+  model.meshConstraints().backgroundField = 1;
+  expectNodesNear(nodeCount(std::move(model)), 1312);
+}
+
+TEST(SizeFields, MinOfBallAndConstantMatchesTheReference) {
+  Model model = square();
+  auto& c = model.meshConstraints();
+  c.sizeFields[1] = field("Ball", {{"Radius", {0.2}}, {"XCenter", {0.5}}, {"YCenter", {0.5}},
+                                   {"VIn", {0.02}}, {"VOut", {0.2}}});
+  c.sizeFields[2] = field("MathEval", {}, {{"F", "0.05"}});
+  c.sizeFields[3] = field("Min", {{"FieldsList", {1, 2}}});
+  c.backgroundField = 3;
+  expectNodesNear(nodeCount(std::move(model)), 826);
+}
+
+TEST(SizeFields, FieldAloneWhenPointsAndBoundaryAreOff) {
+  Model model = square();
+  model.meshConstraints().sizeFields[1] = field("MathEval", {}, {{"F", "0.03"}});
+  model.meshConstraints().backgroundField = 1;
+  MeshOptions options;
+  options.sizeExtendFromBoundary = false;
+  options.sizeFromPoints = false;
+  expectNodesNear(nodeCount(std::move(model), options), 1392);
+}
+
+TEST(SizeFields, ConstantOnASurfaceMatchesTheReference) {
+  Model model = square();
+  model.meshConstraints().sizeFields[1] =
+      field("Constant", {{"VIn", {0.05}}, {"SurfacesList", {1}}});
+  model.meshConstraints().backgroundField = 1;
+  expectNodesNear(nodeCount(std::move(model)), 514);
 }
 
 }  // namespace
