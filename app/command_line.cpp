@@ -72,6 +72,8 @@ bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
     cl.saveAll = true;
   } else if (flag == "-check") {
     cl.check = true;
+  } else if (flag == "-keep_partial") {
+    cl.keepPartial = true;
   } else if (flag == "-v") {
     cl.verbosity = static_cast<int>(in.number(flag));
   } else if (flag == "-setnumber") {
@@ -134,6 +136,7 @@ Mesh:
   -smooth N              smoothing passes (Mesh.Smoothing)
   -rand VALUE            random perturbation factor (Mesh.RandomFactor)
   -check                 check a mesh file (.msh) and report problems
+  -keep_partial          when meshing fails, still write what was meshed
 Script:
   -setnumber NAME VALUE  set a numeric parameter (overrides DefineConstant/DefineNumber)
   -setstring NAME VALUE  set a string parameter (overrides DefineString)

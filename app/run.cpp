@@ -133,9 +133,17 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
     return;
   }
   Stopwatch watch;
-  session.generate(dim);
-  log.info("Meshing done (" + formatSeconds(watch.seconds()) + ")");
   const std::string path = outputPath(cl);
+  try {
+    session.generate(dim);
+  } catch (const MeshError&) {
+    if (cl.keepPartial) {
+      writeMshFile(path, session.model(), session.mesh(), w);
+      log.warning("meshing failed; the partial mesh was written to '" + path + "' (-keep_partial)");
+    }
+    throw;
+  }
+  log.info("Meshing done (" + formatSeconds(watch.seconds()) + ")");
   Stopwatch writeWatch;
   log.info("Writing '" + path + "'...");
   writeMshFile(path, session.model(), session.mesh(), w);

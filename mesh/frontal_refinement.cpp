@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <tuple>
+#include <utility>
 
 namespace geomesh {
 namespace {
@@ -15,6 +17,9 @@ constexpr double kMinSpacing = 0.5;
 constexpr double kSqrt3 = 1.7320508075688772;
 
 enum class State : std::uint8_t { Outside, Waiting, Active, Accepted };
+// Where new points go: in front of the front (frontal-Delaunay), or at the circumcentre of
+// the worst triangle (Delaunay refinement), wherever it is.
+enum class Placement : std::uint8_t { Frontal, Circumcenter };
 
 struct HeapEntry {
   float ratio;
@@ -44,8 +49,9 @@ class FrontalRefiner {
  public:
   FrontalRefiner(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                  std::vector<double>& sizes, const SurfaceMetric* metric,
-                 const WorkPlaneSize* field)
-      : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric), field_(field) {}
+                 const WorkPlaneSize* field, Placement placement)
+      : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric), field_(field),
+        placement_(placement) {}
 
   void run() {
     const std::uint32_t firstNew = static_cast<std::uint32_t>(sizes_.size());
@@ -105,7 +111,7 @@ class FrontalRefiner {
   void activateIfOnFront(std::uint32_t t) {
     if (state_[t] != State::Waiting) return;
     for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
-      if (isFrontEdge(c)) {
+      if (placement_ == Placement::Circumcenter || isFrontEdge(c)) {
         state_[t] = State::Active;
         heap_.push_back({static_cast<float>(ratio(t)), t, stamp_[t]});
         std::push_heap(heap_.begin(), heap_.end());
@@ -188,11 +194,27 @@ class FrontalRefiner {
     return false;
   }
 
-  bool advanceFront(std::uint32_t t) {
-    const std::uint32_t corner = frontCorner(t);
-    if (corner == kNone) return false;
-    const Vec2 x = frontPoint(t, corner);
+  // The circumcentre of t in the metric at its centroid, or its centroid when the circumcentre
+  // falls outside the domain.
+  std::pair<Vec2, std::uint32_t> refinementPoint(std::uint32_t t) const {
+    const MetricFrame f = frameAt(centroid(t));
+    const Vec2 x = f.invert(circumcenter(f.apply(p(t, 0)), f.apply(p(t, 1)), f.apply(p(t, 2))));
     const std::uint32_t found = tri_.locate(x, t);
+    if (found != kNone && inside_[found]) return {x, found};
+    return {centroid(t), t};
+  }
+
+  bool advanceFront(std::uint32_t t) {
+    Vec2 x;
+    std::uint32_t found = kNone;
+    if (placement_ == Placement::Circumcenter) {
+      std::tie(x, found) = refinementPoint(t);
+    } else {
+      const std::uint32_t corner = frontCorner(t);
+      if (corner == kNone) return false;
+      x = frontPoint(t, corner);
+      found = tri_.locate(x, t);
+    }
     if (found == kNone || !inside_[found]) return false;
     // sizes_ keeps the sizes extended from the boundary, so that a field's small sizes do
     // not spread by interpolation; the field applies where a size is used.
@@ -231,6 +253,7 @@ class FrontalRefiner {
   std::vector<double>& sizes_;
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
+  Placement placement_;
   std::vector<State> state_;
   std::vector<std::uint32_t> stamp_;
   std::vector<HeapEntry> heap_;
@@ -241,7 +264,13 @@ class FrontalRefiner {
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                    std::vector<double>& sizes, const SurfaceMetric* metric,
                    const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, sizes, metric, field).run();
+  FrontalRefiner(tri, inside, sizes, metric, field, Placement::Frontal).run();
+}
+
+void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
+                    std::vector<double>& sizes, const SurfaceMetric* metric,
+                    const WorkPlaneSize* field) {
+  FrontalRefiner(tri, inside, sizes, metric, field, Placement::Circumcenter).run();
 }
 
 }  // namespace geomesh

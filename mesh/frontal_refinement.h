@@ -28,4 +28,11 @@ void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                    std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
                    const WorkPlaneSize* field = nullptr);
 
+// Delaunay refinement (Mesh.Algorithm 5): the same acceptance test, but every bad triangle
+// is refined, worst first, by inserting its circumcentre (in the surface's metric), or its
+// centroid when the circumcentre lies outside the domain.
+void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
+                    std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
+                    const WorkPlaneSize* field = nullptr);
+
 }  // namespace geomesh

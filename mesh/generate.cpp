@@ -11,6 +11,7 @@
 #include "mesh/mesh_check.h"
 #include "mesh/recombine.h"
 #include "mesh/size_rules.h"
+#include "mesh/subdivision.h"
 #include "mesh/surface_mesher.h"
 #include "mesh/transfinite_surface.h"
 #include "mesh/volume_mesher.h"
@@ -73,22 +74,39 @@ void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshO
     meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
     return;
   }
-  meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes, &fields);
+  meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes, &fields,
+              options.algorithm2D);
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
+  const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
   recombineTriangles(mesh, em, *angle,
-                     options.recombinationAlgorithm == 0 ? RecombinationAlgorithm::Simple
-                                                         : RecombinationAlgorithm::Blossom);
+                     simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom);
   smoothMixedMesh(*surface.geometry, mesh, em, std::max(options.smoothing, 1) * 3);
+}
+
+// Mesh.RecombinationAlgorithm 2 and 3: simple or blossom, then split into quadrangles.
+bool isFullQuad(const MeshOptions& options) {
+  return options.recombinationAlgorithm == 2 || options.recombinationAlgorithm == 3;
+}
+
+bool wantsAllQuadrangles(const Model& model, const MeshOptions& options) {
+  if (options.subdivisionAlgorithm == 1) return true;
+  if (!isFullQuad(options)) return false;
+  return options.recombineAll || !model.meshConstraints().recombinedSurfaces.empty();
 }
 
 void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRules& rules,
                   const SizeFields& fields, Mesh& mesh, std::vector<double>& nodeSizes,
                   MessageSink& log) {
   constexpr int kFrontalDelaunay = 6;
-  if (options.algorithm2D != kFrontalDelaunay && !model.surfaces().empty())
+  constexpr int kDelaunay = 5;
+  if (options.algorithm2D != kFrontalDelaunay && options.algorithm2D != kDelaunay &&
+      !model.surfaces().empty())
     log.warning("Mesh.Algorithm " + std::to_string(options.algorithm2D) +
                 " is not available: surfaces are meshed with Frontal-Delaunay (6)");
+  if (options.subdivisionAlgorithm == 2 || options.subdivisionAlgorithm == 3)
+    log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
+                " is not available; elements are not split");
   for (const auto& [tag, surface] : model.surfaces())
     meshOneSurface(model, surface, options, rules, fields, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
@@ -104,7 +122,10 @@ MeshError::MeshError(EntityId e, const std::string& reason)
 void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
                   MessageSink& log) {
   mesh.clear();
-  const SizeRules rules = SizeRules::from(model, options);
+  SizeRules rules = SizeRules::from(model, options);
+  // Full-quad recombination of every surface meshes twice as coarse, then splits each
+  // element into quadrangles, which halves the sizes back.
+  if (options.recombineAll && isFullQuad(options) && dim >= 2) rules.factor *= 2;
   std::vector<double> nodeSizes;  // target size at each node, read by the next dimension
   const SizeFields fields(model, log);
   meshPoints(model, rules, fields, mesh, nodeSizes);
@@ -116,6 +137,12 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   if (dim >= 2) {
     const StageTimer timer(2);
     meshSurfaces(model, options, rules, fields, mesh, nodeSizes, log);
+    if (wantsAllQuadrangles(model, options)) {
+      if (dim == 2)
+        subdivideIntoQuadrangles(model, mesh);
+      else
+        log.warning("splitting into quadrangles is only done for 2D meshes; ignored");
+    }
     timer.done(log, mesh.elementCount(2), "triangles");
   }
   if (dim >= 3) {

@@ -154,7 +154,7 @@ void storeMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& insi
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
                  int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes,
-                 const SizeFields* fields) {
+                 const SizeFields* fields, int algorithm2D) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -177,8 +177,9 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     return rules.finish(fields->at(g.point(frame.toParam(work)), id));
   };
   const bool withField = fields && fields->hasBackground();
-  refineFrontal(tri, inside, sizes, g.isPlane() ? nullptr : &metric,
-                withField ? &field : nullptr);
+  constexpr int kDelaunay = 5;
+  (algorithm2D == kDelaunay ? refineDelaunay : refineFrontal)(
+      tri, inside, sizes, g.isPlane() ? nullptr : &metric, withField ? &field : nullptr);
   smoothTriangulation(tri, inside,
                       Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size()),
                       smoothingPasses, g.isPlane() ? nullptr : &metric);

@@ -3,6 +3,7 @@
 // leaves volumes alone (two volumes bounded by the same surfaces both stay).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <unordered_map>
@@ -44,8 +45,8 @@ void GeoFactory::coherence() {
 
 namespace {
 
-// Points hashed into cubes of the tolerance's size: a point's twins lie in its cube or in
-// the 26 around it.
+// Points hashed into cubes much wider than the tolerance: a point's twins lie in its own cube,
+// or, for the few points within the tolerance of a face, in the cubes across.
 struct Cell {
   long long i, j, k;
   friend bool operator==(const Cell&, const Cell&) = default;
@@ -58,56 +59,95 @@ struct CellHash {
   }
 };
 
-long long cellIndex(double x, double size) {
-  return static_cast<long long>(std::clamp(std::floor(x / size), -1e18, 1e18));
-}
+struct KeptPoint {
+  int tag;
+  Vec3 xyz;
+};
 
-Cell cellOf(Vec3 p, double size) {
-  return {cellIndex(p.x, size), cellIndex(p.y, size), cellIndex(p.z, size)};
-}
+class PointGrid {
+ public:
+  explicit PointGrid(double tolerance)
+      : tolerance_(tolerance), size_(std::max(1024 * tolerance, 1e-300)) {}
+
+  // The lowest tag of the kept points within the tolerance of p; 0 if none.
+  int twinOf(Vec3 p) const {
+    const Cell c = cellOf(p);
+    int steps[3][2];  // per axis: neighbour offsets to visit (0 always; -1 or +1 near a face)
+    const double x[3] = {p.x, p.y, p.z};
+    const long long index[3] = {c.i, c.j, c.k};
+    for (int axis = 0; axis < 3; ++axis) {
+      const double low = static_cast<double>(index[axis]) * size_;
+      steps[axis][0] = 0;
+      const bool nearLow = x[axis] - low <= tolerance_;
+      steps[axis][1] = nearLow ? -1 : (low + size_ - x[axis] <= tolerance_ ? 1 : 0);
+    }
+    int twin = 0;
+    for (int a : {0, 1})
+      for (int b : {0, 1})
+        for (int d : {0, 1}) {
+          if ((a && !steps[0][1]) || (b && !steps[1][1]) || (d && !steps[2][1])) continue;
+          auto it = cells_.find({c.i + steps[0][a], c.j + steps[1][b], c.k + steps[2][d]});
+          if (it == cells_.end()) continue;
+          for (const KeptPoint& q : it->second)
+            if (distance(q.xyz, p) <= tolerance_ && (twin == 0 || q.tag < twin)) twin = q.tag;
+        }
+    return twin;
+  }
+
+  void keep(int tag, Vec3 p) { cells_[cellOf(p)].push_back({tag, p}); }
+
+ private:
+  long long index(double x) const {
+    return static_cast<long long>(std::clamp(std::floor(x / size_), -1e18, 1e18));
+  }
+  Cell cellOf(Vec3 p) const { return {index(p.x), index(p.y), index(p.z)}; }
+
+  double tolerance_, size_;
+  std::unordered_map<Cell, std::vector<KeptPoint>, CellHash> cells_;
+};
 
 }  // namespace
 
-// In ascending tags, each point merges into the first earlier point within the tolerance.
+// In ascending tags, each point merges into the lowest earlier point within the tolerance.
 void GeoFactory::mergePoints() {
-  const double tol = absoluteTolerance();
-  const double cellSize = std::max(tol, 1e-300);  // cells at least as wide as the tolerance
-  std::unordered_map<Cell, std::vector<int>, CellHash> kept;
+  PointGrid grid(absoluteTolerance());
   std::map<int, int> replacement;
   for (const auto& [tag, point] : points_) {
-    const Cell c = cellOf(point.xyz, cellSize);
-    int twin = 0;
-    for (long long di = -1; di <= 1; ++di)
-      for (long long dj = -1; dj <= 1; ++dj)
-        for (long long dk = -1; dk <= 1; ++dk) {
-          auto it = kept.find({c.i + di, c.j + dj, c.k + dk});
-          if (it == kept.end()) continue;
-          for (int other : it->second)
-            if (distance(points_.at(other).xyz, point.xyz) <= tol && (twin == 0 || other < twin))
-              twin = other;
-        }
-    if (twin != 0)
+    if (const int twin = grid.twinOf(point.xyz))
       replacement[tag] = twin;
     else
-      kept[c].push_back(tag);
+      grid.keep(tag, point.xyz);
   }
   if (replacement.empty()) return;
   for (const auto& [from, to] : replacement) points_.erase(from);
   replaceTags(0, replacement);
 }
 
+// Curves of one kind through the same points (in either direction) are the same curve. They
+// are first grouped by their unordered pair of ends, then compared point by point.
 void GeoFactory::mergeCurves() {
-  std::map<std::pair<CurveKind, std::vector<int>>, int> seen;
+  std::unordered_map<std::uint64_t, std::vector<const Curve*>> byEnds;
   std::map<int, int> replacement;
   for (const auto& [tag, curve] : curves_) {
-    std::vector<int> backwards(curve.points.rbegin(), curve.points.rend());
-    if (auto it = seen.find({curve.kind, curve.points}); it != seen.end()) {
-      replacement[tag] = it->second;
-    } else if (auto back = seen.find({curve.kind, backwards}); back != seen.end()) {
-      replacement[tag] = -back->second;
-    } else {
-      seen[{curve.kind, curve.points}] = tag;
+    const auto low = static_cast<std::uint32_t>(std::min(curve.start(), curve.end()));
+    const auto high = static_cast<std::uint32_t>(std::max(curve.start(), curve.end()));
+    auto& group = byEnds[(std::uint64_t{low} << 32) | high];
+    int twin = 0;
+    for (const Curve* other : group) {
+      if (other->kind != curve.kind || other->points.size() != curve.points.size()) continue;
+      if (other->points == curve.points) {
+        twin = other->tag;
+      } else if (std::equal(curve.points.rbegin(), curve.points.rend(), other->points.begin())) {
+        twin = -other->tag;
+      } else {
+        continue;
+      }
+      break;
     }
+    if (twin != 0)
+      replacement[tag] = twin;
+    else
+      group.push_back(&curve);
   }
   if (replacement.empty()) return;
   for (const auto& [from, to] : replacement) curves_.erase(from);

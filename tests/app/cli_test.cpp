@@ -290,3 +290,33 @@ EndFor
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+const char* kCrossingCurves = R"(Point(1) = {0, 0, 0, 0.1}; Point(2) = {3, 0, 0, 0.1};
+Point(3) = {0, 1, 0, 0.1}; Point(4) = {1, 2, 0, 0.1};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+)";
+
+TEST_F(Cli, MeshingFailureNamesTheEntityAndWritesNothing) {
+  fs::path geo = write("bow.geo", kCrossingCurves);
+  EXPECT_EQ(run({geo.string(), "-2"}), 1);
+  EXPECT_NE(err_.str().find("surface 1"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "bow.msh"));
+  EXPECT_FALSE(fs::exists(dir_ / "bow.msh.partial"));
+}
+
+TEST_F(Cli, KeepPartialWritesWhatWasMeshed) {
+  fs::path geo = write("bow.geo", kCrossingCurves);
+  EXPECT_EQ(run({geo.string(), "-2", "-keep_partial"}), 1);
+  ASSERT_TRUE(fs::exists(dir_ / "bow.msh")) << err_.str();
+  // The curves were meshed before the surface failed.
+  EXPECT_NE(sectionHeader(dir_ / "bow.msh", "$Elements"), "");
+  EXPECT_NE(err_.str().find("-keep_partial"), std::string::npos) << err_.str();
+}
+
+}  // namespace
+}  // namespace geomesh
