@@ -105,6 +105,16 @@ bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
   return true;
 }
 
+// Line `line` (1-based) of a file, for quoting in a diagnostic; empty if unreadable.
+std::string sourceLine(const std::string& path, int line) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text;
+  for (int i = 1; i <= line; ++i)
+    if (!std::getline(in, text)) return "";
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  return text;
+}
+
 // -0: the evaluated geometry as a flat script, <script>.geo_unrolled unless -o says otherwise.
 void writeUnrolled(const CommandLine& cl, Session& session, ConsoleLog& log) {
   const std::string path = cl.output.empty() ? cl.files.front() + "_unrolled" : cl.output;
@@ -136,11 +146,14 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   const std::string path = outputPath(cl);
   try {
     session.generate(dim);
-  } catch (const MeshError&) {
+  } catch (const MeshError& error) {
     if (cl.keepPartial) {
       writeMshFile(path, session.model(), session.mesh(), w);
       log.warning("meshing failed; the partial mesh was written to '" + path + "' (-keep_partial)");
     }
+    // Point at the statement that defined the entity, when the script did.
+    if (auto where = session.origin(error.entity))
+      throw ScriptError(*where, error.what(), sourceLine(where->file, where->line));
     throw;
   }
   log.info("Meshing done (" + formatSeconds(watch.seconds()) + ")");

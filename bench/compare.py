@@ -22,6 +22,7 @@ SCRIPTS = ROOT / "bench" / "scripts"
 CASES = {
     "square_uniform": ("square_uniform.geo", ["-2"], "2D"),
     "square_uniform_small": ("square_uniform.geo", ["-2", "-setnumber", "lc", "0.01"], "2D"),
+    "plate_holes": ("plate_holes.geo", ["-2"], "2D"),
     "many_points": ("many_points.geo", ["-0"], "script"),
 }
 
@@ -69,14 +70,13 @@ def triangles(msh_path):
         for line in f:
             if line.startswith("$Elements"):
                 break
-        next(f)
-        for line in f:
-            if line.startswith("$EndElements"):
-                break
-            parts = line.split()
-            if len(parts) == 4:
-                if int(parts[2]) == 2:
-                    count += int(parts[3])
+        blocks = int(next(f).split()[0])
+        for _ in range(blocks):
+            _, _, element_type, n = (int(x) for x in next(f).split())
+            if element_type == 2:
+                count += n
+            for _ in range(n):
+                next(f)
     return count
 
 

@@ -105,6 +105,10 @@ bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceL
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
+  if (w.back() != "Loop") {
+    const int dim = w.back() == "Surface" ? 2 : w.back() == "Volume" ? 3 : 1;
+    session_.recordOrigin({dim, tag}, where);
+  }
   return true;
 }
 
@@ -133,6 +137,7 @@ bool Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceL
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
+  session_.recordOrigin({1, tag}, where);
   return true;
 }
 

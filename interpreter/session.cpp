@@ -1,5 +1,6 @@
 #include "interpreter/session.h"
 
+#include <algorithm>
 #include <iostream>
 
 #include "interpreter/interpreter.h"
@@ -41,6 +42,22 @@ MeshOptions Session::meshOptions() const {
 void Session::generate(int dim) {
   synchronize();
   generateMesh(model_, meshOptions(), dim, mesh_, log_);
+}
+
+void Session::recordOrigin(EntityId entity, const SourceLocation& where) {
+  // Scripts define entities file after file: the last file name is nearly always the one.
+  if (lastOriginFile_ >= originFiles_.size() || originFiles_[lastOriginFile_] != where.file) {
+    auto it = std::find(originFiles_.begin(), originFiles_.end(), where.file);
+    if (it == originFiles_.end()) it = originFiles_.insert(it, where.file);
+    lastOriginFile_ = static_cast<std::uint32_t>(it - originFiles_.begin());
+  }
+  origins_[entity] = {lastOriginFile_, where.line, where.column};
+}
+
+std::optional<SourceLocation> Session::origin(EntityId entity) const {
+  auto it = origins_.find(entity);
+  if (it == origins_.end()) return std::nullopt;
+  return SourceLocation{originFiles_[it->second.file], it->second.line, it->second.column};
 }
 
 }  // namespace geomesh

@@ -2,9 +2,13 @@
 
 #include <iosfwd>
 #include <map>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "grammar/source.h"
 #include "kernel/geo/geo_factory.h"
 #include "kernel/messages.h"
 #include "kernel/model.h"
@@ -48,6 +52,11 @@ class Session {
   // Synchronizes, then meshes up to `dim`; throws MeshError.
   void generate(int dim);
 
+  // Where the script defined a curve, surface or volume, so that a failure met later (while
+  // meshing) can point at the statement. Null when unknown.
+  void recordOrigin(EntityId entity, const SourceLocation& where);
+  std::optional<SourceLocation> origin(EntityId entity) const;
+
  private:
   MessageSink& log_;
   std::ostream& out_;
@@ -57,6 +66,13 @@ class Session {
   Mesh mesh_;
   std::map<std::string, double> numberOverrides_;
   std::map<std::string, std::string> stringOverrides_;
+  struct Origin {
+    std::uint32_t file;  // index in originFiles_
+    int line, column;
+  };
+  std::map<EntityId, Origin> origins_;
+  std::vector<std::string> originFiles_;
+  std::uint32_t lastOriginFile_ = 0;
 };
 
 }  // namespace geomesh

@@ -20,6 +20,20 @@ constexpr int kTwistSteps = 5;
 // The curve a point sweeps; 0 when the point does not move (it lies on the rotation axis).
 int sweptCurve(const std::vector<EntityId>& made) { return made.empty() ? 0 : made[1].tag; }
 
+bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+void checkMotion(const ExtrusionMotion& motion) {
+  using Kind = ExtrusionMotion::Kind;
+  if (!finite(motion.translation) || !finite(motion.axis) || !finite(motion.axisPoint) ||
+      !std::isfinite(motion.angle))
+    fail("Extrude: its parameters are not finite numbers");
+  const bool turns = motion.kind != Kind::Translation && motion.angle != 0;
+  const bool moves = motion.kind != Kind::Rotation && norm(motion.translation) > 0;
+  if (motion.kind != Kind::Translation && norm(motion.axis) == 0)
+    fail("Extrude: the rotation axis is the zero vector");
+  if (!turns && !moves) fail("Extrude: the extrusion does not move anything");
+}
+
 int remapped(int signedTag, const std::map<int, int>& merges) {
   auto it = merges.find(std::abs(signedTag));
   if (it == merges.end()) return signedTag;
@@ -32,8 +46,7 @@ std::vector<EntityId> GeoFactory::extrude(const std::vector<EntityId>& shapes,
                                           const ExtrusionMotion& motion,
                                           const ExtrusionLayers& layers) {
   for (EntityId shape : shapes) requireShape(shape, "Extrude");
-  if (motion.kind != ExtrusionMotion::Kind::Translation && norm(motion.axis) == 0)
-    fail("Extrude: the rotation axis is the zero vector");
+  checkMotion(motion);
   std::vector<EntityId> out;
   for (EntityId shape : shapes) {
     const int tag = std::abs(shape.tag);

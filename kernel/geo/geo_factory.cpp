@@ -80,6 +80,10 @@ std::vector<std::vector<int>> GeoFactory::surfaceLoopsOf(int tag,
     // Holes run against the direction they were given in, as the built-in kernel of Gmsh
     // stores them (whatever that direction was).
     loops.push_back(loopCurves(loops.empty() ? l : -l));
+    for (int c : loops.back())
+      if (!curves_.contains(std::abs(c)))
+        fail(what, " ", tag, ": curve ", std::abs(c), " of curve loop ", std::abs(l),
+             " has been deleted");
   }
   return loops;
 }
@@ -122,6 +126,10 @@ void GeoFactory::addVolume(int tag, std::vector<int> surfaceLoops) {
     if (!surfaceLoops_.contains(std::abs(l)))
       fail("Volume ", tag, ": surface loop ", std::abs(l), " is not defined");
     std::vector<int> shell = surfaceLoops_.at(std::abs(l));
+    for (int s : shell)
+      if (!surfaces_.contains(std::abs(s)))
+        fail("Volume ", tag, ": surface ", std::abs(s), " of surface loop ", std::abs(l),
+             " has been deleted");
     if (l < 0)
       for (int& s : shell) s = -s;
     volume.shells.push_back(std::move(shell));

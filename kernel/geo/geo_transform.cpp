@@ -68,6 +68,10 @@ std::vector<int> GeoFactory::pointsUnder(const std::vector<EntityId>& shapes) co
 
 void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap& map) {
   for (EntityId shape : shapes) requireShape(shape, "Transformation");
+  for (double x : map.m)
+    if (!std::isfinite(x)) fail("Transformation: its parameters are not finite numbers");
+  if (!std::isfinite(map.pivot.x) || !std::isfinite(map.pivot.y) || !std::isfinite(map.pivot.z))
+    fail("Transformation: its center is not a finite point");
   const std::vector<int> moved = pointsUnder(shapes);
   for (int p : moved) {
     ModelPoint& point = points_.at(p);

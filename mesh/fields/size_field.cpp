@@ -178,6 +178,44 @@ double threshold(const SizeFields::Field& f, double d) {
   return sMin + r * (sMax - sMin);
 }
 
+// The fields a field reads.
+std::vector<int> dependencies(const SizeFields::Field& f) {
+  using T = SizeFields::Type;
+  if (f.type == T::Threshold || f.type == T::Restrict)
+    return {static_cast<int>(std::lround(f.number("InField")))};
+  if (f.type == T::Min || f.type == T::Max) return f.fieldsList;
+  if (f.type == T::MathEval) return f.expression->fieldsUsed();
+  return {};
+}
+
+// Tags of the fields that read themselves, directly or not (depth-first search, colours:
+// 0 unseen, 1 on the stack, 2 done).
+std::vector<int> fieldsInCycles(const std::map<int, SizeFields::Field>& fields) {
+  std::map<int, int> colour;
+  std::vector<int> cyclic;
+  std::vector<int> stack;
+  auto visit = [&](auto&& self, int tag) -> void {
+    const auto it = fields.find(tag);
+    if (it == fields.end()) return;
+    int& c = colour[tag];
+    if (c == 1) {
+      const auto from = std::find(stack.begin(), stack.end(), tag);
+      cyclic.insert(cyclic.end(), from, stack.end());
+      return;
+    }
+    if (c == 2) return;
+    c = 1;
+    stack.push_back(tag);
+    for (int next : dependencies(it->second)) self(self, next);
+    stack.pop_back();
+    colour[tag] = 2;
+  };
+  for (const auto& entry : fields) visit(visit, entry.first);
+  std::sort(cyclic.begin(), cyclic.end());
+  cyclic.erase(std::unique(cyclic.begin(), cyclic.end()), cyclic.end());
+  return cyclic;
+}
+
 }  // namespace
 
 double SizeFields::Field::number(const std::string& name) const {
@@ -195,6 +233,10 @@ SizeFields::SizeFields(const Model& model, MessageSink& log) : model_(&model) {
       continue;
     }
     fields_.emplace(tag, compile(model, tag, def, type, log));
+  }
+  for (int tag : fieldsInCycles(fields_)) {
+    log.warning("Field[" + std::to_string(tag) + "] depends on itself; it reads as 1e22");
+    fields_.erase(tag);
   }
   background_ = c.backgroundField;
   if (background_ != 0 && !fields_.contains(background_))

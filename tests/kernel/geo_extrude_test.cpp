@@ -247,6 +247,19 @@ TEST(GeoExtrude, OptionsDropLateralsAndCoherence) {
   EXPECT_EQ(geo.maxTag(0), 10);  // the copies' points stay apart from the swept points
 }
 
+TEST(GeoExtrude, RejectsMotionsThatMoveNothing) {
+  GeoFactory geo;
+  geo.addPoint(1, {1, 0, 0}, 1);
+  EXPECT_THROW(geo.extrude({{0, 1}}, ExtrusionMotion::translate({0, 0, 0}), kNoLayers),
+               GeometryError);
+  EXPECT_THROW(geo.extrude({{0, 1}}, ExtrusionMotion::rotate({0, 0, 1}, {}, 0), kNoLayers),
+               GeometryError);
+  EXPECT_THROW(geo.extrude({{0, 1}}, ExtrusionMotion::translate({0, 0, NAN}), kNoLayers),
+               GeometryError);
+  EXPECT_THROW(geo.transform({{0, 1}}, AffineMap::translation({INFINITY, 0, 0})), GeometryError);
+  EXPECT_EQ(geo.maxTag(0), 1);
+}
+
 TEST(GeoExtrude, UndefinedShapeIsNamed) {
   GeoFactory geo;
   try {

@@ -131,6 +131,19 @@ TEST(GeoTransform, DeleteKeepsWhatIsUsed) {
   EXPECT_TRUE(geo.points().empty());
 }
 
+TEST(GeoTransform, LoopsOfDeletedCurvesAreReported) {
+  GeoFactory geo;
+  addUnitSquareSurface(geo);
+  geo.remove({{2, 1}}, false);
+  geo.remove({{1, 3}}, false);
+  try {
+    geo.addPlaneSurface(2, {1});
+    FAIL();
+  } catch (const GeometryError& e) {
+    EXPECT_STREQ(e.what(), "Plane surface 2: curve 3 of curve loop 1 has been deleted");
+  }
+}
+
 TEST(GeoTransform, UndefinedShapeIsNamed) {
   GeoFactory geo;
   try {

@@ -62,5 +62,56 @@ TEST(GeoUnrolledWriter, HooksAddStatementsAfterEntities) {
             "Mesh.Algorithm = 6;\n");
 }
 
+// The unit square extruded along z, as the reference writes it after the same script.
+TEST(GeoUnrolledWriter, WritesAnExtrudedCubeAsTheReferenceDoes) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 1);
+  geo.addPoint(2, {1, 0, 0}, 1);
+  geo.addPoint(3, {1, 1, 0}, 1);
+  geo.addPoint(4, {0, 1, 0}, 1);
+  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
+  geo.addCurveLoop(1, {1, 2, 3, 4});
+  geo.addPlaneSurface(1, {1});
+  geo.extrude({{2, 1}}, ExtrusionMotion::translate({0, 0, 1}), {});
+  std::ostringstream out;
+  writeUnrolledGeo(geo, out);
+  EXPECT_EQ(out.str(),
+            "cl__1 = 1;\n"
+            "Point(1) = {0, 0, 0, cl__1};\n"
+            "Point(2) = {1, 0, 0, cl__1};\n"
+            "Point(3) = {1, 1, 0, cl__1};\n"
+            "Point(4) = {0, 1, 0, cl__1};\n"
+            "Point(5) = {0, 0, 1, cl__1};\n"
+            "Point(6) = {1, 0, 1, cl__1};\n"
+            "Point(10) = {1, 1, 1, cl__1};\n"
+            "Point(14) = {0, 1, 1, cl__1};\n"
+            "Line(1) = {1, 2};\n"
+            "Line(2) = {2, 3};\n"
+            "Line(3) = {3, 4};\n"
+            "Line(4) = {4, 1};\n"
+            "Line(6) = {5, 6};\n"
+            "Line(7) = {6, 10};\n"
+            "Line(8) = {10, 14};\n"
+            "Line(9) = {14, 5};\n"
+            "Line(11) = {1, 5};\n"
+            "Line(12) = {2, 6};\n"
+            "Line(16) = {3, 10};\n"
+            "Line(20) = {4, 14};\n"
+            "Curve Loop(1) = {1, 2, 3, 4};\n"
+            "Plane Surface(1) = {1};\n"
+            "Curve Loop(13) = {1, 12, -6, -11};\n"
+            "Surface(13) = {13};\n"
+            "Curve Loop(17) = {2, 16, -7, -12};\n"
+            "Surface(17) = {17};\n"
+            "Curve Loop(21) = {3, 20, -8, -16};\n"
+            "Surface(21) = {21};\n"
+            "Curve Loop(25) = {4, 11, -9, -20};\n"
+            "Surface(25) = {25};\n"
+            "Curve Loop(26) = {6, 7, 8, 9};\n"
+            "Plane Surface(26) = {26};\n"
+            "Surface Loop(1) = {1, 26, 13, 17, 21, 25};\n"
+            "Volume(1) = {1};\n");
+}
+
 }  // namespace
 }  // namespace geomesh

@@ -6,6 +6,7 @@
 
 #include "mesh/generate.h"
 #include "mesh/mesh_check.h"
+#include "mesh/quality.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {
@@ -73,7 +74,7 @@ TEST(Recombine, SimpleAlgorithmPairsMostTriangles) {
   // The reference mesher leaves 417 quadrangles and 108 triangles here.
   EXPECT_GT(c.quads, 350u);
   EXPECT_LT(c.triangles, 250u);
-  EXPECT_GT(c.minQuality, 0.2);
+  EXPECT_GT(c.minQuality, 0.3);
   EXPECT_NEAR(c.area, 1.0, 1e-9);
   const MeshCheckReport report = checkMesh(model, mesh);
   EXPECT_TRUE(report.ok()) << report.summary();
@@ -89,7 +90,7 @@ TEST(Recombine, BlossomLeavesAtMostAFewTriangles) {
   EXPECT_GT(c.quads, 420u);
   EXPECT_LT(c.quads, 510u);
   EXPECT_LE(c.triangles, 4u);
-  EXPECT_GT(c.minQuality, 0.05);
+  EXPECT_GT(c.minQuality, 0.3);
   EXPECT_NEAR(c.area, 1.0, 1e-9);
   const MeshCheckReport report = checkMesh(model, mesh);
   EXPECT_TRUE(report.ok()) << report.summary();
@@ -146,7 +147,30 @@ TEST(Subdivision, FullQuadRecombinationLeavesOnlyQuadrangles) {
   // The reference mesher makes 142 quadrangles here.
   EXPECT_GT(c.quads, 110u);
   EXPECT_LT(c.quads, 180u);
+  EXPECT_GT(c.minQuality, 0.3);
   EXPECT_NEAR(c.area, 1.0, 1e-9);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(DelaunayAlgorithm, RefinesToTheSameDensityAsTheReference) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.05)});
+  MeshOptions options;
+  options.algorithm2D = 5;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, options, 2, mesh, log);
+  // The reference mesher's Delaunay algorithm gives 568 nodes here.
+  EXPECT_GT(mesh.nodeCount(), 530u);
+  EXPECT_LT(mesh.nodeCount(), 610u);
+  EXPECT_GT(meshQuality(mesh, 2, QualityMeasure::Gamma).min, 0.5);
   const MeshCheckReport report = checkMesh(b.model, mesh);
   EXPECT_TRUE(report.ok()) << report.summary();
 }

@@ -193,3 +193,23 @@ TEST(SizeFields, ConstantOnASurfaceMatchesTheReference) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(SizeFields, CyclesAreBrokenWithAWarning) {
+  Model model;
+  auto& c = model.meshConstraints();
+  c.sizeFields[1] = field("MathEval", {}, {{"F", "F2 + F2"}});
+  c.sizeFields[2] = field("Min", {{"FieldsList", {1, 3}}});
+  c.sizeFields[3] = field("MathEval", {}, {{"F", "0.5"}});
+  c.backgroundField = 3;
+  RecordingSink log;
+  const SizeFields f(model, log);
+  EXPECT_EQ(log.warnings.size(), 2u);
+  EXPECT_GT(f.value(1, {0, 0, 0}, {2, 1}), 1e21);
+  EXPECT_NEAR(f.at({0, 0, 0}, {2, 1}), 0.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace geomesh

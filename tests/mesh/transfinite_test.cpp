@@ -213,3 +213,57 @@ TEST(TransfiniteSurface, ExplicitCornersSplitALongerLoop) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+// A patch of the unit sphere from the equator to latitude 1.2, a quarter turn wide.
+Model spherePatch() {
+  Model model;
+  const auto sphere = std::make_shared<testing::SphereGeometry>();
+  const double kPi = testing::SphereGeometry::kPi;
+  const std::vector<Vec2> corners{{0, 0}, {kPi / 2, 0}, {kPi / 2, 1.2}, {0, 1.2}};
+  ModelSurface patch{1, {{}}, sphere, {}, {}};
+  for (int k = 0; k < 4; ++k) model.addPoint({k + 1, sphere->point(corners[k]), 0.1});
+  for (int k = 0; k < 4; ++k) {
+    model.addCurve({k + 1, k + 1, (k + 1) % 4 + 1,
+                    std::make_shared<testing::IsoCurve>(sphere, corners[k], corners[(k + 1) % 4])});
+    patch.loops[0].push_back(k + 1);
+    model.meshConstraints().transfiniteCurves[k + 1] =
+        law(k % 2 == 0 ? 11 : 7, TransfiniteCurve::Law::Progression, 1);
+  }
+  model.addSurface(patch);
+  model.meshConstraints().transfiniteSurfaces[1] = {};
+  return model;
+}
+
+TEST(TransfiniteSurface, CurvedSurfaceGridLiesOnTheSurface) {
+  for (bool recombine : {false, true}) {
+    Model model = spherePatch();
+    if (recombine) model.meshConstraints().recombinedSurfaces[1] = 45;
+    Mesh mesh;
+    SilentSink log;
+    generateMesh(model, {}, 2, mesh, log);
+    EXPECT_EQ(mesh.elementCount(2), (recombine ? 1u : 2u) * 10 * 6);
+    const double exactArea = testing::SphereGeometry::kPi / 2 * std::sin(1.2);
+    EXPECT_NEAR(faceArea(mesh, 1), exactArea, 0.02 * exactArea);
+    const MeshCheckReport report = checkMesh(model, mesh);  // orientation: outward normals
+    EXPECT_TRUE(report.ok()) << report.summary();
+  }
+}
+
+TEST(Recombine, CurvedSurfaceKeepsQuadranglesOnIt) {
+  Model model = spherePatch();
+  model.meshConstraints().transfiniteSurfaces.clear();
+  model.meshConstraints().transfiniteCurves.clear();
+  model.meshConstraints().recombinedSurfaces[1] = 45;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(model, {}, 2, mesh, log);
+  EXPECT_GT(mesh.find({2, 1})->findBlock(ElementType::Quad4)->size(), 50u);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+}  // namespace
+}  // namespace geomesh
