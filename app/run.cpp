@@ -69,6 +69,19 @@ std::string outputPath(const CommandLine& cl) {
   return p.string();
 }
 
+// Without -format, Mesh.Format decides: 1 is MSH, 10 (the default) chooses by the output
+// file's extension. Only MSH is written so far: anything else is refused before meshing.
+void requireMshOutput(const std::string& path, double format) {
+  if (format == 1) return;
+  if (format != 10)
+    throw CommandLineError("Mesh.Format " + std::to_string(static_cast<int>(format)) +
+                           " is not supported yet: only MSH (1) is written");
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext != ".msh")
+    throw CommandLineError("cannot write '" + path + "': the '" + ext +
+                           "' format is not supported yet (only .msh)");
+}
+
 MshWriteOptions writeOptions(const CommandLine& cl, const OptionRegistry& options) {
   MshWriteOptions w;
   w.saveAll = options.number("Mesh.SaveAll") != 0;
@@ -81,6 +94,8 @@ MshWriteOptions writeOptions(const CommandLine& cl, const OptionRegistry& option
   } else if (!cl.format.empty()) {
     throw CommandLineError("unsupported output format '" + cl.format +
                            "' (supported: msh41, msh4, msh22, msh2)");
+  } else {
+    requireMshOutput(outputPath(cl), options.number("Mesh.Format"));
   }
   if (w.version >= 4) {
     w.version = 4.1;
@@ -135,13 +150,13 @@ void writeUnrolled(const CommandLine& cl, Session& session, ConsoleLog& log) {
 
 void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   const int dim = *cl.dimension;
-  MshWriteOptions w = writeOptions(cl, session.options());
   if (dim == 0) {
     session.synchronize();
     log.info("Geometry: " + describeModel(session.model()));
     writeUnrolled(cl, session, log);
     return;
   }
+  const MshWriteOptions w = writeOptions(cl, session.options());
   Stopwatch watch;
   const std::string path = outputPath(cl);
   try {

@@ -7,11 +7,12 @@
 
 namespace geomesh {
 
-// A maximum-weight matching (Edmonds' blossom algorithm, by LEMON) of the graph on
-// `nodeCount` nodes whose edge e joins ends[2e] and ends[2e + 1] with weight weights[e] (an
-// integer; larger is better). Returns one flag per edge: 1 when the edge is matched.
-std::vector<std::uint8_t> maxWeightMatching(std::uint32_t nodeCount,
-                                            const std::vector<std::uint32_t>& ends,
-                                            const std::vector<std::int64_t>& weights);
+// A maximum-cardinality matching (Edmonds' blossom algorithm, by LEMON) of the graph on
+// `nodeCount` nodes whose edge e joins ends[2e] and ends[2e + 1], grown from the matching
+// `initial` (one flag per edge; it must be a matching) by augmenting paths, so that most of
+// its pairs stay. Returns one flag per edge: 1 when the edge is matched.
+std::vector<std::uint8_t> maximumMatching(std::uint32_t nodeCount,
+                                          const std::vector<std::uint32_t>& ends,
+                                          const std::vector<std::uint8_t>& initial);
 
 }  // namespace geomesh

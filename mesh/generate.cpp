@@ -131,7 +131,8 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   meshPoints(model, rules, fields, mesh, nodeSizes);
   if (dim >= 1) {
     const StageTimer timer(1);
-    for (const auto& [tag, curve] : model.curves()) meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
+    for (const auto& [tag, curve] : model.curves())
+      meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {

@@ -1,7 +1,6 @@
 // smoothMixedMesh (declared in recombine.h): Laplacian smoothing over triangles and quadrangles.
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "mesh/recombine.h"
@@ -15,13 +14,15 @@ struct ElementRef {
 
 // Neighbours (along element sides) and incident elements of each of the surface's own nodes.
 struct NodeStar {
-  std::unordered_map<NodeIndex, std::uint32_t> localOf;
+  static constexpr std::uint32_t kNotOwn = 0xffffffffu;
+  std::vector<std::uint32_t> localOf;  // by global node: index in em.nodes, or kNotOwn
   std::vector<std::vector<NodeIndex>> neighbours;
   std::vector<std::vector<ElementRef>> elements;
 };
 
-NodeStar buildStars(const EntityMesh& em) {
+NodeStar buildStars(const Mesh& mesh, const EntityMesh& em) {
   NodeStar star;
+  star.localOf.assign(mesh.nodeCount(), NodeStar::kNotOwn);
   for (std::uint32_t k = 0; k < em.nodes.size(); ++k) star.localOf[em.nodes[k]] = k;
   star.neighbours.resize(em.nodes.size());
   star.elements.resize(em.nodes.size());
@@ -32,11 +33,11 @@ NodeStar buildStars(const EntityMesh& em) {
     for (std::uint32_t e = 0; e < block.size(); ++e) {
       const auto nodes = block.element(e);
       for (int k = 0; k < n; ++k) {
-        const auto it = star.localOf.find(nodes[k]);
-        if (it == star.localOf.end()) continue;
-        star.elements[it->second].push_back({b, e});
+        const std::uint32_t local = star.localOf[nodes[k]];
+        if (local == NodeStar::kNotOwn) continue;
+        star.elements[local].push_back({b, e});
         for (NodeIndex other : {nodes[(k + 1) % n], nodes[(k + n - 1) % n]}) {
-          std::vector<NodeIndex>& list = star.neighbours[it->second];
+          std::vector<NodeIndex>& list = star.neighbours[local];
           if (std::find(list.begin(), list.end(), other) == list.end()) list.push_back(other);
         }
       }
@@ -66,7 +67,7 @@ bool starValid(const Mesh& mesh, const EntityMesh& em, const std::vector<Element
 }  // namespace
 
 void smoothMixedMesh(const SurfaceGeometry& g, Mesh& mesh, EntityMesh& em, int passes) {
-  const NodeStar star = buildStars(em);
+  const NodeStar star = buildStars(mesh, em);
   const bool haveParameters = em.parametric.size() == 2 * em.nodes.size();
   for (int pass = 0; pass < passes; ++pass)
     for (std::uint32_t k = 0; k < em.nodes.size(); ++k) {

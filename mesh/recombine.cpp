@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace geomesh {
@@ -34,20 +33,29 @@ void quadOf(std::span<const NodeIndex> tri, int k, NodeIndex opposite, NodeIndex
 
 std::vector<Candidate> candidates(const Mesh& mesh, const ElementBlock& triangles,
                                   double minQuality) {
-  struct Half {
+  // Every triangle side, sorted by edge: the two sides of an interior edge end up adjacent.
+  struct Side {
+    std::uint64_t key;
     std::uint32_t triangle;
     int edge;
   };
-  std::unordered_map<std::uint64_t, std::vector<Half>> byEdge;
-  byEdge.reserve(triangles.size() * 2);
+  std::vector<Side> sides;
+  sides.reserve(3 * triangles.size());
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     const auto n = triangles.element(t);
-    for (int k = 0; k < 3; ++k) byEdge[edgeKey(n[k], n[(k + 1) % 3])].push_back({t, k});
+    for (int k = 0; k < 3; ++k) sides.push_back({edgeKey(n[k], n[(k + 1) % 3]), t, k});
   }
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return a.key != b.key ? a.key < b.key : a.triangle < b.triangle;
+  });
   std::vector<Candidate> result;
-  for (const auto& entry : byEdge) {
-    const std::vector<Half>& halves = entry.second;
-    if (halves.size() != 2) continue;  // boundary or non-manifold edge
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
+    const bool interior = j - i == 2;  // else a boundary or non-manifold edge
+    const Side* halves = &sides[i];
+    i = j;
+    if (!interior) continue;
     const auto s = triangles.element(halves[0].triangle);
     const auto t = triangles.element(halves[1].triangle);
     Candidate c{0, halves[0].triangle, halves[1].triangle, {}};
@@ -59,7 +67,7 @@ std::vector<Candidate> candidates(const Mesh& mesh, const ElementBlock& triangle
                                  mesh.node(c.quad[2]), mesh.node(c.quad[3]), normal);
     if (c.quality >= minQuality) result.push_back(c);
   }
-  // Best first; ties broken by triangle indices so the result does not depend on hashing.
+  // Best first; ties broken by triangle indices.
   std::sort(result.begin(), result.end(), [](const Candidate& x, const Candidate& y) {
     if (x.quality != y.quality) return x.quality > y.quality;
     if (x.s != y.s) return x.s < y.s;
@@ -89,22 +97,16 @@ std::vector<std::uint8_t> greedyChoice(const std::vector<Candidate>& ranked,
   return chosen;
 }
 
-// Blossom: a matching of the triangles with as many pairs as possible and, among those, the
-// largest total quality (each pair is worth more than all qualities together).
+// Blossom: the greedy pairs, completed into a maximum-cardinality matching by Edmonds'
+// blossom algorithm (augmenting paths re-pair a few triangles so that as few as possible
+// stay alone).
 std::vector<std::uint8_t> blossomChoice(const std::vector<Candidate>& ranked,
                                         std::size_t triangleCount) {
-  constexpr std::int64_t kQualityScale = 1000;
-  const std::int64_t pairValue = kQualityScale * (static_cast<std::int64_t>(triangleCount) + 1);
   std::vector<std::uint32_t> ends;
-  std::vector<std::int64_t> weights;
   ends.reserve(2 * ranked.size());
-  weights.reserve(ranked.size());
-  for (const Candidate& c : ranked) {
-    ends.insert(ends.end(), {c.s, c.t});
-    // Even weights keep LEMON's integer dual solution exact.
-    weights.push_back(2 * (pairValue + std::llround(kQualityScale * c.quality)));
-  }
-  return maxWeightMatching(static_cast<std::uint32_t>(triangleCount), ends, weights);
+  for (const Candidate& c : ranked) ends.insert(ends.end(), {c.s, c.t});
+  return maximumMatching(static_cast<std::uint32_t>(triangleCount), ends,
+                         greedyChoice(ranked, triangleCount));
 }
 
 }  // namespace

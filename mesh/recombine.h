@@ -11,11 +11,10 @@ namespace geomesh {
 // Two triangles sharing an edge that is not on the boundary make a candidate quadrangle when
 // it is convex and every corner angle stays within `maxAngleDeviation` degrees of 90
 // (Recombine Surface{..} = angle; 45 by default). Candidates are taken greedily, best
-// corner-angle quality first (Simple), or by a maximum matching of the triangles that
-// prefers, among those with the most quadrangles, the best total quality (Blossom: every
-// convex pair is a candidate); each triangle joins at most one quadrangle, unpaired
-// triangles stay. The Quad4 elements keep the triangles' orientation. Returns the number of
-// quadrangles made.
+// corner-angle quality first (Simple), or so, then completed by Edmonds' blossom algorithm
+// into a matching with as many quadrangles as possible (Blossom: every convex pair is a
+// candidate); each triangle joins at most one quadrangle, unpaired triangles stay. The Quad4
+// elements keep the triangles' orientation. Returns the number of quadrangles made.
 enum class RecombinationAlgorithm { Simple = 0, Blossom = 1 };
 std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngleDeviation,
                                RecombinationAlgorithm algorithm);

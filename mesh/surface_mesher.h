@@ -11,8 +11,8 @@ namespace geomesh {
 
 // Meshes one surface whose boundary (and embedded) curves and points are meshed already:
 // constrained Delaunay triangulation of the boundary nodes in the parameter plane, frontal-
-// Delaunay (algorithm2D 6) or Delaunay (5) refinement to the target size (extended from the boundary nodes' sizes in
-// nodeSizes), then `smoothingPasses` passes of smoothing. Curved surfaces are refined in
+// Delaunay (algorithm2D 6) or Delaunay (5) refinement to the target size (extended from the
+// boundary nodes' sizes in nodeSizes), then `smoothingPasses` passes of smoothing. Curved surfaces are refined in
 // their own metric (first fundamental form), planes in plain lengths. No boundary node is added;
 // the triangles are counter-clockwise in the surface's parametrization. Throws MeshError naming the
 // surface when its boundary cannot be triangulated.

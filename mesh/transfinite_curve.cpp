@@ -46,7 +46,9 @@ std::vector<double> transfiniteFractions(const TransfiniteCurve& law) {
   std::vector<double> x(static_cast<std::size_t>(segments) + 1);
   for (int k = 0; k <= segments; ++k) {
     switch (law.law) {
-      case TransfiniteCurve::Law::Progression: x[k] = progression(k, segments, law.coefficient); break;
+      case TransfiniteCurve::Law::Progression:
+        x[k] = progression(k, segments, law.coefficient);
+        break;
       case TransfiniteCurve::Law::Bump: x[k] = bump(k, segments, law.coefficient); break;
       case TransfiniteCurve::Law::Beta: x[k] = beta(k, segments, law.coefficient); break;
     }

@@ -38,7 +38,7 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.FirstElementTag", Number, 1, "", "first tag given to elements", ""},
       {"Mesh.FirstNodeTag", Number, 1, "", "first tag given to nodes", ""},
       {"Mesh.FlexibleTransfinite", Number, 0, "", "mesh setting: flexible transfinite", ""},
-      {"Mesh.Format", Number, 1, "", "output format: 1 msh, 2 unv, 10 auto, 16 vtk, 19 vrml, 21 mail, 26 pos stat, 27 stl, 28 p3d, 30 mesh, 31 bdf, 32 cgns, 33 med, 34 diff, 38 ir3, 39 inp, 40 ply2, 41 celum, 42 su2, 47 tochnog, 49 neu, 50 matlab", ""},
+      {"Mesh.Format", Number, 10, "", "output format: 1 msh, 2 unv, 10 auto, 16 vtk, 19 vrml, 21 mail, 26 pos stat, 27 stl, 28 p3d, 30 mesh, 31 bdf, 32 cgns, 33 med, 34 diff, 38 ir3, 39 inp, 40 ply2, 41 celum, 42 su2, 47 tochnog, 49 neu, 50 matlab", ""},
       {"Mesh.Hexahedra", Number, 1, "", "show hexahedra", ""},
       {"Mesh.HighOrderDistCAD", Number, 0, "", "mesh setting: high order dist CAD", ""},
       {"Mesh.HighOrderFixBoundaryNodes", Number, 0, "", "mesh setting: high order fix boundary nodes", ""},

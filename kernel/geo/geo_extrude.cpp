@@ -14,9 +14,6 @@ using geo_detail::fail;
 
 namespace {
 
-// Geometry.ExtrudeSplinePoints: a twisted point sweeps a spline through this many steps.
-constexpr int kTwistSteps = 5;
-
 // The curve a point sweeps; 0 when the point does not move (it lies on the rotation axis).
 int sweptCurve(const std::vector<EntityId>& made) { return made.empty() ? 0 : made[1].tag; }
 
@@ -91,8 +88,8 @@ std::vector<EntityId> GeoFactory::extrudePoint(int tag, const ExtrusionMotion& m
     // keeps its rounding).
     curve = Curve{0, CurveKind::Spline, {tag}};
     Vec3 xyz = source.xyz;
-    for (int i = 1; i <= kTwistSteps; ++i) {
-      xyz = motion.apply(xyz, 1.0 / kTwistSteps);
+    for (int i = 1; i <= twistSteps_; ++i) {
+      xyz = motion.apply(xyz, 1.0 / twistSteps_);
       const int step = newPointTag();
       points_[step] = ModelPoint{step, xyz, source.meshSize};
       bounds_.include(xyz);

@@ -123,6 +123,9 @@ class GeoFactory {
   // Geometry.ExtrudeReturnLateralEntities (default on): extrusions list their lateral
   // entities after the swept one.
   void setExtrudeReturnsLateralEntities(bool on) { returnLaterals_ = on; }
+  // Geometry.ExtrudeSplinePoints (default 5): a twisted point sweeps a spline through this
+  // many steps (at least 1).
+  void setExtrudeSplineSteps(int steps) { twistSteps_ = steps < 1 ? 1 : steps; }
 
   // Replaces the model's geometry with this factory's entities.
   void synchronize(Model& model) const;
@@ -186,6 +189,7 @@ class GeoFactory {
   double tolerance_ = 1e-8;
   bool autoCoherence_ = true;
   bool returnLaterals_ = true;
+  int twistSteps_ = 5;
   std::array<int, 6> highWater_{};  // maxTag() of each kind
   // Replacements made by Coherence since lastMerges_ was last cleared, per dimension (signed).
   std::array<std::map<int, int>, 4> lastMerges_;
@@ -213,6 +217,7 @@ class GeoFactory {
   // geo_transform.cpp
   void requireShape(EntityId shape, const char* operation) const;
   void collectPoints(EntityId shape, std::vector<int>& out) const;
+  void checkArcsStayCircular(const std::map<int, Vec3>& image) const;
   std::vector<int> pointsUnder(const std::vector<EntityId>& shapes) const;  // sorted, unique
   int copyPoint(int tag);
   int copyCurve(int signedTag);

@@ -1,4 +1,5 @@
 // The geometry of the built-in kernel's surfaces, and the Model built from its entities.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -51,9 +52,13 @@ std::shared_ptr<const SurfaceGeometry> GeoFactory::fitPlaneSurface(
 std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
   if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops);
   const std::vector<int>& loop = s.loops.front();
-  if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion)
-    if (auto source = curves_.find(std::abs(s.extrusion->source)); source != curves_.end())
-      return std::make_shared<SweptSurfaceGeometry>(curveGeometry(source->second), *s.sweep);
+  if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion) {
+    const int source = s.extrusion->source;
+    const bool reversed = std::find(loop.begin(), loop.end(), -source) != loop.end();
+    if (auto curve = curves_.find(source); curve != curves_.end())
+      return std::make_shared<SweptSurfaceGeometry>(curveGeometry(curve->second), *s.sweep,
+                                                    reversed);
+  }
   std::vector<CoonsSurfaceGeometry::Side> sides;
   for (int c : loop) sides.push_back({curveGeometry(curves_.at(std::abs(c))), c < 0});
   if (sides.size() != 3 && sides.size() != 4)

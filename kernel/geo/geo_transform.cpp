@@ -73,10 +73,12 @@ void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap&
   if (!std::isfinite(map.pivot.x) || !std::isfinite(map.pivot.y) || !std::isfinite(map.pivot.z))
     fail("Transformation: its center is not a finite point");
   const std::vector<int> moved = pointsUnder(shapes);
-  for (int p : moved) {
-    ModelPoint& point = points_.at(p);
-    point.xyz = map.apply(point.xyz);
-    bounds_.include(point.xyz);
+  std::map<int, Vec3> image;
+  for (int p : moved) image[p] = map.apply(points_.at(p).xyz);
+  if (!isIdentityLinearPart(map)) checkArcsStayCircular(image);
+  for (const auto& [p, xyz] : image) {
+    points_.at(p).xyz = xyz;
+    bounds_.include(xyz);
   }
   if (!isIdentityLinearPart(map)) {
     // A swept surface keeps its exact shape only under translations; otherwise it falls back
@@ -91,6 +93,24 @@ void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap&
     }
   }
   if (autoCoherence_) coherence();
+}
+
+// A transformation that does not keep distances (a dilation by different factors, a shear)
+// can break circle arcs: their ends must stay at about the same distance from the center.
+void GeoFactory::checkArcsStayCircular(const std::map<int, Vec3>& image) const {
+  auto where = [&](int p) {
+    auto it = image.find(p);
+    return it != image.end() ? it->second : points_.at(p).xyz;
+  };
+  for (const auto& [tag, curve] : curves_) {
+    if (curve.kind != CurveKind::CircleArc) continue;
+    const auto& p = curve.points;
+    if (!image.contains(p[0]) && !image.contains(p[1]) && !image.contains(p[2])) continue;
+    const double r1 = distance(where(p[0]), where(p[1])), r2 = distance(where(p[2]), where(p[1]));
+    if (std::abs(r1 - r2) > 0.1 * std::max(r1, r2))
+      fail("Transformation: circle ", tag, " would no longer be circular (radii ", r1, " and ",
+           r2, " around point ", p[1], ")");
+  }
 }
 
 int GeoFactory::copyPoint(int tag) {

@@ -9,18 +9,25 @@
 namespace geomesh {
 
 SweptSurfaceGeometry::SweptSurfaceGeometry(std::shared_ptr<const CurveGeometry> curve,
-                                           ExtrusionMotion motion)
-    : curve_(std::move(curve)), motion_(motion) {}
+                                           ExtrusionMotion motion, bool reversed)
+    : curve_(std::move(curve)), motion_(motion), reversed_(reversed) {}
 
 ParamBox SweptSurfaceGeometry::bounds() const { return {curve_->range(), {0, 1}}; }
 
+double SweptSurfaceGeometry::curveParameter(double u) const {
+  const Interval r = curve_->range();
+  return reversed_ ? r.min + r.max - u : u;
+}
+
 Vec3 SweptSurfaceGeometry::point(Vec2 uv) const {
-  return motion_.apply(curve_->point(uv.u), uv.v);
+  return motion_.apply(curve_->point(curveParameter(uv.u)), uv.v);
 }
 
 SurfaceDerivatives SweptSurfaceGeometry::firstDerivatives(Vec2 uv) const {
-  return {motion_.rotateVector(curve_->firstDerivative(uv.u), uv.v),
-          motion_.velocity(curve_->point(uv.u), uv.v)};
+  const double t = curveParameter(uv.u);
+  const Vec3 along = curve_->firstDerivative(t);
+  return {motion_.rotateVector(reversed_ ? -along : along, uv.v),
+          motion_.velocity(curve_->point(t), uv.v)};
 }
 
 Vec2 SweptSurfaceGeometry::project(Vec3 p) const { return projectOnSurface(*this, p); }

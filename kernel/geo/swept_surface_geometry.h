@@ -11,10 +11,13 @@ namespace geomesh {
 
 // The surface swept by a curve under an extrusion: point(u, v) = M_v(curve(u)), u over the
 // curve's range, v in [0, 1]. Translations give ruled (cylindrical) surfaces, rotations
-// surfaces of revolution.
+// surfaces of revolution. A reversed sweep runs the curve backwards (curve(min + max - u)),
+// so that the surface's loop, which starts with the reversed curve, still runs
+// counter-clockwise in the parameters.
 class SweptSurfaceGeometry final : public SurfaceGeometry {
  public:
-  SweptSurfaceGeometry(std::shared_ptr<const CurveGeometry> curve, ExtrusionMotion motion);
+  SweptSurfaceGeometry(std::shared_ptr<const CurveGeometry> curve, ExtrusionMotion motion,
+                       bool reversed = false);
 
   ParamBox bounds() const override;
   Vec3 point(Vec2 uv) const override;
@@ -22,8 +25,11 @@ class SweptSurfaceGeometry final : public SurfaceGeometry {
   Vec2 project(Vec3 p) const override;
 
  private:
+  double curveParameter(double u) const;
+
   std::shared_ptr<const CurveGeometry> curve_;
   ExtrusionMotion motion_;
+  bool reversed_;
 };
 
 // Transfinite (Coons) interpolation of three or four boundary curves. Each side is given with

@@ -26,7 +26,9 @@ class MathExpression {
   // The value at (x, y, z); fieldValues[k] is the value of fieldsUsed()[k] there.
   double evaluate(double x, double y, double z, std::span<const double> fieldValues) const;
 
-  enum class Op : unsigned char { Number, X, Y, Z, Field, Neg, Add, Sub, Mul, Div, Pow, Call1, Call2 };
+  enum class Op : unsigned char {
+    Number, X, Y, Z, Field, Neg, Add, Sub, Mul, Div, Pow, Call1, Call2
+  };
   struct Instruction {
     Op op;
     int index = 0;   // Field: position in fieldsUsed(); Call: function number

@@ -102,9 +102,11 @@ std::vector<Vec3> distanceSamples(const Model& model, const std::vector<EntityId
       if (!s || !s->geometry) continue;
       const ParamBox box = s->geometry->bounds();
       for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-          samples.push_back(s->geometry->point({box.u.min + (box.u.max - box.u.min) * i / (n - 1),
-                                                box.v.min + (box.v.max - box.v.min) * j / (n - 1)}));
+        for (int j = 0; j < n; ++j) {
+          const double u = box.u.min + (box.u.max - box.u.min) * i / (n - 1);
+          const double v = box.v.min + (box.v.max - box.v.min) * j / (n - 1);
+          samples.push_back(s->geometry->point({u, v}));
+        }
     }
   }
   return samples;

@@ -36,7 +36,9 @@ class SizeFields {
   // Field `tag` at a point (1e22 if undefined).
   double value(int tag, Vec3 point, EntityId where) const;
 
-  enum class Type { Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict };
+  enum class Type {
+    Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict
+  };
   struct Field {
     Type type = Type::Constant;
     std::map<std::string, double> numbers;   // canonical option names

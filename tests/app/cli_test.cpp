@@ -320,3 +320,20 @@ TEST_F(Cli, KeepPartialWritesWhatWasMeshed) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST_F(Cli, AnUnsupportedOutputExtensionIsRefusedBeforeMeshing) {
+  fs::path geo = write("sq.geo", kSquare);
+  EXPECT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.vtk").string()}), 1);
+  EXPECT_NE(err_.str().find("'.vtk' format is not supported"), std::string::npos) << err_.str();
+  EXPECT_EQ(err_.str().find("Meshing 1D"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "sq.vtk"));
+  // An explicit format writes MSH whatever the name.
+  EXPECT_EQ(run({geo.string(), "-2", "-format", "msh41", "-o", (dir_ / "sq.mesh41").string()}), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "sq.mesh41"));
+}
+
+}  // namespace
+}  // namespace geomesh

@@ -101,6 +101,15 @@ TEST(GeoExtrude, ReversedBoundaryCurvesAreSweptAsTheLoopRuns) {
   EXPECT_EQ(geo.surfaces().at(13).loops.front(), (std::vector<int>{-1, 12, -6, -11}));
   EXPECT_EQ(geo.surfaces().at(21).loops.front(), (std::vector<int>{-3, 20, -8, -16}));
   EXPECT_EQ(geo.surfaces().at(26).loops.front(), (std::vector<int>{6, 7, 8, 9}));
+  // The lateral surface of the reversed curve 1 runs it backwards: its loop, starting with
+  // -1, goes counter-clockwise in the parameters (normal du x dv pointing out of the box).
+  Model model;
+  geo.synchronize(model);
+  const SurfaceGeometry& side = *model.surface(13)->geometry;
+  const Vec3 start = side.point({0, 0});
+  EXPECT_NEAR(distance(start, {0, 0, 0}), 0, 1e-12);
+  const SurfaceDerivatives d = side.firstDerivatives({0.5, 0.5});
+  EXPECT_LT(cross(d.du, d.dv).y, 0);
 }
 
 TEST(GeoExtrude, PhysicalTagsCountInTheNumbering) {

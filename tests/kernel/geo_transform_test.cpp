@@ -86,6 +86,19 @@ TEST(GeoTransform, RotationMovesControlPointsOfCurves) {
   expectNear(mid, {std::sqrt(0.5), 0, std::sqrt(0.5)});
 }
 
+TEST(GeoTransform, DilationThatBreaksACircleIsRefused) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 1);
+  geo.addPoint(2, {1, 0, 0}, 1);
+  geo.addPoint(3, {0, 1, 0}, 1);
+  geo.addCircleArc(1, 2, 1, 3);
+  EXPECT_THROW(geo.transform({{1, 1}}, AffineMap::dilation({0, 0, 0}, {2, 1, 1})),
+               GeometryError);
+  expectNear(geo.pointCoordinates(2), {1, 0, 0});  // nothing moved
+  geo.transform({{1, 1}}, AffineMap::dilation({0, 0, 0}, {2, 2, 2}));
+  expectNear(geo.pointCoordinates(2), {2, 0, 0});
+}
+
 TEST(GeoTransform, BoundariesAreOriented) {
   GeoFactory geo;
   addUnitSquareSurface(geo);

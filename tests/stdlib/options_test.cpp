@@ -20,7 +20,7 @@ TEST(OptionRegistry, RequiredDefaults) {
       {"Mesh.RecombineAll", 0},         {"Mesh.Optimize", 1},
       {"General.NumThreads", 1},        {"General.Verbosity", 5},
       {"Geometry.Tolerance", 1e-8},     {"Geometry.AutoCoherence", 1},
-      {"Mesh.Format", 1}};
+      {"Mesh.Format", 10}};
   for (const auto& [name, value] : defaults) {
     ASSERT_TRUE(options.hasNumber(name)) << name;
     EXPECT_DOUBLE_EQ(options.number(name), value) << name;
