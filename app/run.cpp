@@ -137,7 +137,7 @@ void writeUnrolled(const CommandLine& cl, Session& session, ConsoleLog& log) {
   log.info("Writing '" + path + "'...");
   {
     std::ofstream out(partial, std::ios::binary);
-    writeUnrolledGeo(session.geo(), out);
+    writeUnrolledGeo(session.geo(), out, meshConstraintHooks(session.model().meshConstraints()));
     out.close();
     if (!out) {
       std::filesystem::remove(partial);

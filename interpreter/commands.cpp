@@ -71,6 +71,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
     return warn(where, message);
   }
   if (head == "SetNumber" || head == "SetString") return executeSetter(command, where);
+  if (executeMeshSize(command, where)) return;
   if (executeGeometry(command, where)) return;
   if (executeShapeCommand(command, where)) return;
   if (isInterfaceOnly(head)) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <optional>
 #include <cstdio>
 #include <string>
@@ -65,6 +66,18 @@ std::optional<double> recombinationAngle(const Model& model, const MeshOptions& 
   return std::nullopt;
 }
 
+// Edges of the curves embedded in a surface, which recombination must keep.
+std::vector<std::uint64_t> embeddedEdges(const ModelSurface& surface, const Mesh& mesh) {
+  std::vector<std::uint64_t> keys;
+  for (int curve : surface.embeddedCurves)
+    if (const EntityMesh* em = mesh.find({1, std::abs(curve)}))
+      if (const ElementBlock* lines = em->findBlock(ElementType::Line2))
+        for (std::size_t e = 0; e < lines->size(); ++e)
+          keys.push_back(edgeKey(lines->element(e)[0], lines->element(e)[1]));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshOptions& options,
                     const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
                     std::vector<double>& nodeSizes) {
@@ -80,7 +93,8 @@ void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshO
   EntityMesh& em = mesh.entity({2, surface.tag});
   const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
   recombineTriangles(mesh, em, *angle,
-                     simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom);
+                     simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom,
+                     embeddedEdges(surface, mesh));
   smoothMixedMesh(*surface.geometry, mesh, em, std::max(options.smoothing, 1) * 3);
 }
 
@@ -114,6 +128,12 @@ void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRule
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
 }
 
+bool hasQuadrangles(const Mesh& mesh) {
+  for (const auto& entry : mesh.entities())
+    if (entry.first.dim == 2 && entry.second.findBlock(ElementType::Quad4)) return true;
+  return false;
+}
+
 }  // namespace
 
 MeshError::MeshError(EntityId e, const std::string& reason)
@@ -144,7 +164,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
       else
         log.warning("splitting into quadrangles is only done for 2D meshes; ignored");
     }
-    timer.done(log, mesh.elementCount(2), "triangles");
+    timer.done(log, mesh.elementCount(2), hasQuadrangles(mesh) ? "elements" : "triangles");
   }
   if (dim >= 3) {
     const StageTimer timer(3);

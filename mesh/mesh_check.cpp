@@ -269,16 +269,19 @@ class Checker {
     }
   }
 
-  // The surface's triangles, then its quadrangles each cut along a diagonal into two: the
-  // checks of triangles then cover quadrangles (an inverted or non-convex corner makes an
-  // inverted half; the diagonal is an interior edge of exactly two halves).
-  ElementBlock splitFaces(const EntityMesh& em) const {
+  // The surface's triangles (if `withTriangles`), then its quadrangles each cut into two
+  // along the diagonal from corner `first` to corner first + 2: the checks of triangles then
+  // cover quadrangles. Cut along both diagonals in turn, a quadrangle that is inverted or not
+  // convex has an inverted half; the diagonal is an interior edge of exactly two halves.
+  ElementBlock splitFaces(const EntityMesh& em, bool withTriangles, int first) const {
     ElementBlock faces;
-    if (const ElementBlock* triangles = em.findBlock(ElementType::Triangle3)) faces = *triangles;
+    if (const ElementBlock* triangles = em.findBlock(ElementType::Triangle3))
+      if (withTriangles) faces = *triangles;
     if (const ElementBlock* quads = em.findBlock(ElementType::Quad4))
       for (std::size_t e = 0; e < quads->size(); ++e) {
         const auto q = quads->element(e);
-        faces.nodes.insert(faces.nodes.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+        const NodeIndex a = q[first], b = q[first + 1], c = q[first + 2], d = q[(first + 3) % 4];
+        faces.nodes.insert(faces.nodes.end(), {a, b, c, a, c, d});
       }
     return faces;
   }
@@ -287,11 +290,15 @@ class Checker {
     const EntityId id{2, surface.tag};
     const EntityMesh* em = mesh_.find(id);
     if (!em) return;
-    const ElementBlock triangles = splitFaces(*em);
+    // Cut along the diagonal that recombination did not join across (corners 1 and 3), so
+    // that a quadrangle straddling a curve edge shows.
+    const ElementBlock triangles = splitFaces(*em, true, 1);
     if (triangles.size() == 0) return problem(id, "has no triangles");
     for (NodeIndex n : triangles.nodes)
       if (n >= mesh_.nodeCount()) return;  // reported already
     checkTriangles(id, surface, *em, triangles);
+    const ElementBlock otherHalves = splitFaces(*em, false, 0);
+    if (otherHalves.size() > 0) checkTriangles(id, surface, *em, otherHalves);
     checkConformity(id, surface, triangles);
     checkSurfaceNodes(id, surface, *em);
   }

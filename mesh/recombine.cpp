@@ -12,10 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | b;
-}
 
 // A candidate: triangles s and t (indices in the block) joined across their shared edge.
 struct Candidate {
@@ -32,7 +28,7 @@ void quadOf(std::span<const NodeIndex> tri, int k, NodeIndex opposite, NodeIndex
 }
 
 std::vector<Candidate> candidates(const Mesh& mesh, const ElementBlock& triangles,
-                                  double minQuality) {
+                                  double minQuality, const std::vector<std::uint64_t>& kept) {
   // Every triangle side, sorted by edge: the two sides of an interior edge end up adjacent.
   struct Side {
     std::uint64_t key;
@@ -55,7 +51,7 @@ std::vector<Candidate> candidates(const Mesh& mesh, const ElementBlock& triangle
     const bool interior = j - i == 2;  // else a boundary or non-manifold edge
     const Side* halves = &sides[i];
     i = j;
-    if (!interior) continue;
+    if (!interior || std::binary_search(kept.begin(), kept.end(), halves[0].key)) continue;
     const auto s = triangles.element(halves[0].triangle);
     const auto t = triangles.element(halves[1].triangle);
     Candidate c{0, halves[0].triangle, halves[1].triangle, {}};
@@ -125,7 +121,8 @@ double quadAngleQuality(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 normal) {
 }
 
 std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngleDeviation,
-                               RecombinationAlgorithm algorithm) {
+                               RecombinationAlgorithm algorithm,
+                               const std::vector<std::uint64_t>& keptEdges) {
   ElementBlock* block = nullptr;
   for (ElementBlock& b : em.blocks)
     if (b.type == ElementType::Triangle3) block = &b;
@@ -136,7 +133,7 @@ std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngle
   constexpr double kConvex = 1e-9;
   const double minQuality =
       blossom ? kConvex : 1 - std::clamp(maxAngleDeviation, 0.0, 90.0) / 90;
-  const std::vector<Candidate> ranked = candidates(mesh, *block, minQuality);
+  const std::vector<Candidate> ranked = candidates(mesh, *block, minQuality, keptEdges);
   const std::vector<std::uint8_t> chosen =
       blossom ? blossomChoice(ranked, block->size()) : greedyChoice(ranked, block->size());
   std::vector<std::uint8_t> paired(block->size(), 0);

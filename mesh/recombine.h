@@ -1,6 +1,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "kernel/geometry.h"
 #include "mesh/mesh.h"
@@ -15,9 +18,18 @@ namespace geomesh {
 // into a matching with as many quadrangles as possible (Blossom: every convex pair is a
 // candidate); each triangle joins at most one quadrangle, unpaired triangles stay. The Quad4
 // elements keep the triangles' orientation. Returns the number of quadrangles made.
+// Triangles are never joined across an edge of `keptEdges` (edge keys of curve segments,
+// sorted: see edgeKey).
 enum class RecombinationAlgorithm { Simple = 0, Blossom = 1 };
 std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngleDeviation,
-                               RecombinationAlgorithm algorithm);
+                               RecombinationAlgorithm algorithm,
+                               const std::vector<std::uint64_t>& keptEdges = {});
+
+// The key of the edge between two nodes, whatever their order.
+inline std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
 
 // Corner-angle quality of a quadrangle: 1 - max |corner angle - 90 deg| / 90 deg, so 1 for a
 // rectangle; -1 when it is not strictly convex with respect to `normal`.

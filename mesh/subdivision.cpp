@@ -1,17 +1,15 @@
 #include "mesh/subdivision.h"
 
+#include "mesh/recombine.h"
+
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace geomesh {
 namespace {
 
 using EdgeMiddles = std::unordered_map<std::uint64_t, NodeIndex>;
-
-std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | b;
-}
 
 // Cuts every segment of the curve at its parametric middle.
 void splitCurve(const ModelCurve& curve, Mesh& mesh, EdgeMiddles& middles) {

@@ -170,8 +170,9 @@ bool leftDiagonal(TransfiniteSurface::Arrangement a, int i, int j) {
   switch (a) {
     case A::Left: return true;
     case A::Right: return false;
-    case A::AlternateLeft: return !odd;
-    case A::AlternateRight: return odd;
+    // As in Gmsh, AlternateLeft starts with a right diagonal in the first cell.
+    case A::AlternateLeft: return odd;
+    case A::AlternateRight: return !odd;
   }
   return true;
 }

@@ -23,6 +23,7 @@ void GeoFactory::embed(int dim, const std::vector<int>& tags, int hostDim, int h
     fail("In: cannot embed entities of dimension ", dim, " in dimension ", hostDim);
   requireShape({hostDim, hostTag}, "In");
   for (int t : tags) requireShape({dim, t}, "In");
+  hostTag = std::abs(hostTag);
   if (hostDim == 1) {
     appendAll(curves_.at(hostTag).embeddedPoints, tags);
   } else if (hostDim == 2) {

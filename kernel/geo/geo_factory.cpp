@@ -216,10 +216,14 @@ int GeoFactory::newRegionTag(int kind) {
 
 int GeoFactory::newVolumeTag() { return ++highWater_[3]; }
 
+// Entities go; the options (tolerance, coherence, extrusion settings) stay.
 void GeoFactory::clear() {
-  const double tolerance = tolerance_;
-  *this = GeoFactory();
-  tolerance_ = tolerance;
+  GeoFactory empty;
+  empty.tolerance_ = tolerance_;
+  empty.autoCoherence_ = autoCoherence_;
+  empty.returnLaterals_ = returnLaterals_;
+  empty.twistSteps_ = twistSteps_;
+  *this = std::move(empty);
 }
 
 double GeoFactory::absoluteTolerance() const {

@@ -26,4 +26,10 @@ struct UnrolledGeoHooks {
 void writeUnrolledGeo(const GeoFactory& geo, std::ostream& out,
                       const UnrolledGeoHooks& hooks = {});
 
+// Hooks writing the transfinite and recombination constraints as the reference does
+// ("Transfinite Curve {-1} = 30 Using Progression 1.2;" after the curve, "Transfinite Surface
+// {1} = {1,2,3,4};" and "Recombine Surface {1};" after the surface). Size fields are not
+// written. `constraints` must outlive the hooks.
+UnrolledGeoHooks meshConstraintHooks(const MeshConstraints& constraints);
+
 }  // namespace geomesh

@@ -17,11 +17,11 @@ double distance2(Vec3 a, Vec3 b) {
 
 PointCloud::PointCloud(std::vector<Vec3> points) : points_(std::move(points)) {
   axis_.assign(points_.size(), 0);
-  build(0, static_cast<std::uint32_t>(points_.size()), 0);
+  build(0, static_cast<std::uint32_t>(points_.size()));
 }
 
 // Splits along the axis of largest extent of the range.
-void PointCloud::build(std::uint32_t begin, std::uint32_t end, int depth) {
+void PointCloud::build(std::uint32_t begin, std::uint32_t end) {
   if (end - begin <= 1) return;
   Vec3 lo = points_[begin], hi = lo;
   for (std::uint32_t k = begin; k < end; ++k) {
@@ -35,8 +35,8 @@ void PointCloud::build(std::uint32_t begin, std::uint32_t end, int depth) {
   std::nth_element(points_.begin() + begin, points_.begin() + mid, points_.begin() + end,
                    [axis](Vec3 a, Vec3 b) { return coordinate(a, axis) < coordinate(b, axis); });
   axis_[mid] = static_cast<std::uint8_t>(axis);
-  build(begin, mid, depth + 1);
-  build(mid + 1, end, depth + 1);
+  build(begin, mid);
+  build(mid + 1, end);
 }
 
 void PointCloud::search(Vec3 p, std::uint32_t begin, std::uint32_t end, double& best2) const {

@@ -17,7 +17,7 @@ class PointCloud {
   double distanceTo(Vec3 p) const;
 
  private:
-  void build(std::uint32_t begin, std::uint32_t end, int depth);
+  void build(std::uint32_t begin, std::uint32_t end);
   void search(Vec3 p, std::uint32_t begin, std::uint32_t end, double& best2) const;
   std::vector<Vec3> points_;
   std::vector<std::uint8_t> axis_;  // split axis of the subtree whose middle element is k

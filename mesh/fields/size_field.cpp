@@ -14,30 +14,42 @@ namespace {
 constexpr double kUnbounded = 1e22;
 constexpr int kMaxDepth = 64;  // deeper field references are taken for a cycle
 
+using Slot = SizeFields::Slot;
+
+constexpr const char* kSlotNames[SizeFields::kSlotCount] = {
+    "VIn",     "VOut",    "XMin",    "XMax",    "YMin",    "YMax",    "ZMin",
+    "ZMax",    "Thickness", "Radius", "XCenter", "YCenter", "ZCenter", "XAxis",
+    "YAxis",   "ZAxis",   "Sampling", "InField", "SizeMin", "SizeMax", "DistMin",
+    "DistMax", "Sigmoid", "StopAtDistMax", "IncludeBoundary"};
+
 struct Default {
-  const char* name;
+  Slot slot;
   double value;
 };
 
 // The numeric options of each type, with their default values.
 std::vector<Default> numericOptions(SizeFields::Type t) {
   using T = SizeFields::Type;
+  using S = Slot;
   switch (t) {
-    case T::Constant: return {{"VIn", kUnbounded}, {"VOut", kUnbounded}, {"IncludeBoundary", 1}};
+    case T::Constant:
+      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::IncludeBoundary, 1}};
     case T::Box:
-      return {{"VIn", kUnbounded}, {"VOut", kUnbounded}, {"XMin", 0}, {"XMax", 0}, {"YMin", 0},
-              {"YMax", 0}, {"ZMin", 0}, {"ZMax", 0}, {"Thickness", 0}};
+      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::XMin, 0}, {S::XMax, 0},
+              {S::YMin, 0},         {S::YMax, 0},          {S::ZMin, 0}, {S::ZMax, 0},
+              {S::Thickness, 0}};
     case T::Ball:
-      return {{"VIn", kUnbounded}, {"VOut", kUnbounded}, {"Radius", 0}, {"Thickness", 0},
-              {"XCenter", 0}, {"YCenter", 0}, {"ZCenter", 0}};
+      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::Radius, 0}, {S::Thickness, 0},
+              {S::XCenter, 0},      {S::YCenter, 0},       {S::ZCenter, 0}};
     case T::Cylinder:
-      return {{"VIn", kUnbounded}, {"VOut", kUnbounded}, {"Radius", 0}, {"XAxis", 0},
-              {"YAxis", 0}, {"ZAxis", 1}, {"XCenter", 0}, {"YCenter", 0}, {"ZCenter", 0}};
-    case T::Distance: return {{"Sampling", 20}};
+      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::Radius, 0},  {S::XAxis, 0},
+              {S::YAxis, 0},        {S::ZAxis, 1},         {S::XCenter, 0}, {S::YCenter, 0},
+              {S::ZCenter, 0}};
+    case T::Distance: return {{S::Sampling, 20}};
     case T::Threshold:
-      return {{"InField", 0}, {"SizeMin", 0.1}, {"SizeMax", 1}, {"DistMin", 1}, {"DistMax", 10},
-              {"Sigmoid", 0}, {"StopAtDistMax", 0}};
-    case T::Restrict: return {{"InField", 0}, {"IncludeBoundary", 1}};
+      return {{S::InField, 0}, {S::SizeMin, 0.1}, {S::SizeMax, 1},       {S::DistMin, 1},
+              {S::DistMax, 10}, {S::Sigmoid, 0},  {S::StopAtDistMax, 0}};
+    case T::Restrict: return {{S::InField, 0}, {S::IncludeBoundary, 1}};
     case T::MathEval:
     case T::Min:
     case T::Max: return {};
@@ -117,7 +129,16 @@ SizeFields::Field compile(const Model& model, int tag, const SizeFieldDefinition
                           SizeFields::Type type, MessageSink& log) {
   SizeFields::Field f;
   f.type = type;
-  for (const Default& d : numericOptions(type)) f.numbers[d.name] = d.value;
+  std::vector<std::uint8_t> valid(SizeFields::kSlotCount, 0);
+  for (const Default& d : numericOptions(type)) {
+    f.slots[static_cast<std::size_t>(d.slot)] = d.value;
+    valid[static_cast<std::size_t>(d.slot)] = 1;
+  }
+  auto slotNamed = [&](const std::string& name) -> int {
+    for (int k = 0; k < SizeFields::kSlotCount; ++k)
+      if (valid[k] && name == kSlotNames[k]) return k;
+    return -1;
+  };
   const std::string field = "Field[" + std::to_string(tag) + "]";
   for (const auto& [rawName, values] : def.numbers) {
     const std::string name = canonicalOption(rawName);
@@ -127,8 +148,8 @@ SizeFields::Field compile(const Model& model, int tag, const SizeFieldDefinition
     } else if (name == "FieldsList" && (type == SizeFields::Type::Min ||
                                         type == SizeFields::Type::Max)) {
       for (double v : values) f.fieldsList.push_back(static_cast<int>(std::lround(v)));
-    } else if (f.numbers.contains(name) && values.size() == 1) {
-      f.numbers[name] = values.front();
+    } else if (const int slot = slotNamed(name); slot >= 0 && values.size() == 1) {
+      f.slots[static_cast<std::size_t>(slot)] = values.front();
     } else {
       log.warning(field + "." + rawName + " is not an option of this field type; ignored");
     }
@@ -148,7 +169,7 @@ SizeFields::Field compile(const Model& model, int tag, const SizeFieldDefinition
     f.expression = std::make_unique<MathExpression>("F2 + Sin(z)");
   if (type == SizeFields::Type::Distance)
     f.samples = std::make_unique<PointCloud>(distanceSamples(
-        model, f.entities, static_cast<int>(std::lround(f.number("Sampling")))));
+        model, f.entities, static_cast<int>(std::lround(f.number(Slot::Sampling)))));
   return f;
 }
 
@@ -168,12 +189,12 @@ double transition(double distanceOutside, double thickness, double vIn, double v
 }
 
 double threshold(const SizeFields::Field& f, double d) {
-  const double dMin = f.number("DistMin"), dMax = f.number("DistMax");
-  const double sMin = f.number("SizeMin"), sMax = f.number("SizeMax");
+  const double dMin = f.number(Slot::DistMin), dMax = f.number(Slot::DistMax);
+  const double sMin = f.number(Slot::SizeMin), sMax = f.number(Slot::SizeMax);
   if (d <= dMin) return sMin;
-  if (d >= dMax) return f.number("StopAtDistMax") != 0 ? kUnbounded : sMax;
+  if (d >= dMax) return f.number(Slot::StopAtDistMax) != 0 ? kUnbounded : sMax;
   const double r = (d - dMin) / (dMax - dMin);
-  if (f.number("Sigmoid") != 0) {
+  if (f.number(Slot::Sigmoid) != 0) {
     const double s = 1 / (1 + std::exp(-12 * (r - 0.5)));
     return sMin + s * (sMax - sMin);
   }
@@ -184,7 +205,7 @@ double threshold(const SizeFields::Field& f, double d) {
 std::vector<int> dependencies(const SizeFields::Field& f) {
   using T = SizeFields::Type;
   if (f.type == T::Threshold || f.type == T::Restrict)
-    return {static_cast<int>(std::lround(f.number("InField")))};
+    return {static_cast<int>(std::lround(f.number(Slot::InField)))};
   if (f.type == T::Min || f.type == T::Max) return f.fieldsList;
   if (f.type == T::MathEval) return f.expression->fieldsUsed();
   return {};
@@ -220,10 +241,7 @@ std::vector<int> fieldsInCycles(const std::map<int, SizeFields::Field>& fields) 
 
 }  // namespace
 
-double SizeFields::Field::number(const std::string& name) const {
-  const auto it = numbers.find(name);
-  return it == numbers.end() ? 0 : it->second;
-}
+
 
 SizeFields::SizeFields(const Model& model, MessageSink& log) : model_(&model) {
   const MeshConstraints& c = model.meshConstraints();
@@ -289,37 +307,38 @@ bool SizeFields::inEntities(const std::vector<EntityId>& list, EntityId where,
 double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int depth) const {
   switch (f.type) {
     case Type::Constant:
-      return inEntities(f.entities, where, f.number("IncludeBoundary") != 0) ? f.number("VIn")
-                                                                             : f.number("VOut");
+      return inEntities(f.entities, where, f.number(Slot::IncludeBoundary) != 0)
+                 ? f.number(Slot::VIn)
+                 : f.number(Slot::VOut);
     case Type::Restrict:
-      return inEntities(f.entities, where, f.number("IncludeBoundary") != 0)
-                 ? valueAtDepth(static_cast<int>(f.number("InField")), p, where, depth)
+      return inEntities(f.entities, where, f.number(Slot::IncludeBoundary) != 0)
+                 ? valueAtDepth(static_cast<int>(f.number(Slot::InField)), p, where, depth)
                  : kUnbounded;
     case Type::Box: {
-      const Vec3 lo{f.number("XMin"), f.number("YMin"), f.number("ZMin")};
-      const Vec3 hi{f.number("XMax"), f.number("YMax"), f.number("ZMax")};
-      return transition(boxDistance(p, lo, hi), f.number("Thickness"), f.number("VIn"),
-                        f.number("VOut"));
+      const Vec3 lo{f.number(Slot::XMin), f.number(Slot::YMin), f.number(Slot::ZMin)};
+      const Vec3 hi{f.number(Slot::XMax), f.number(Slot::YMax), f.number(Slot::ZMax)};
+      return transition(boxDistance(p, lo, hi), f.number(Slot::Thickness), f.number(Slot::VIn),
+                        f.number(Slot::VOut));
     }
     case Type::Ball: {
-      const Vec3 c{f.number("XCenter"), f.number("YCenter"), f.number("ZCenter")};
-      return transition(distance(p, c) - f.number("Radius"), f.number("Thickness"),
-                        f.number("VIn"), f.number("VOut"));
+      const Vec3 c{f.number(Slot::XCenter), f.number(Slot::YCenter), f.number(Slot::ZCenter)};
+      return transition(distance(p, c) - f.number(Slot::Radius), f.number(Slot::Thickness),
+                        f.number(Slot::VIn), f.number(Slot::VOut));
     }
     case Type::Cylinder: {
-      const Vec3 c{f.number("XCenter"), f.number("YCenter"), f.number("ZCenter")};
-      const Vec3 axis{f.number("XAxis"), f.number("YAxis"), f.number("ZAxis")};
+      const Vec3 c{f.number(Slot::XCenter), f.number(Slot::YCenter), f.number(Slot::ZCenter)};
+      const Vec3 axis{f.number(Slot::XAxis), f.number(Slot::YAxis), f.number(Slot::ZAxis)};
       const double length = norm(axis);
-      if (!(length > 0)) return f.number("VOut");
+      if (!(length > 0)) return f.number(Slot::VOut);
       const Vec3 d = p - c;
       const double along = dot(d, axis) / length;
       const double radial = norm(d - (along / length) * axis);
-      const bool inside = std::abs(along) <= length && radial <= f.number("Radius");
-      return inside ? f.number("VIn") : f.number("VOut");
+      const bool inside = std::abs(along) <= length && radial <= f.number(Slot::Radius);
+      return inside ? f.number(Slot::VIn) : f.number(Slot::VOut);
     }
     case Type::Distance: return f.samples->distanceTo(p);
     case Type::Threshold:
-      return threshold(f, valueAtDepth(static_cast<int>(f.number("InField")), p, where, depth));
+      return threshold(f, valueAtDepth(static_cast<int>(f.number(Slot::InField)), p, where, depth));
     case Type::MathEval: {
       const std::vector<int>& used = f.expression->fieldsUsed();
       double values[16];

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <span>
@@ -39,14 +41,21 @@ class SizeFields {
   enum class Type {
     Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict
   };
+  // Numeric options, by position (each type uses some of them).
+  enum class Slot : std::uint8_t {
+    VIn, VOut, XMin, XMax, YMin, YMax, ZMin, ZMax, Thickness, Radius, XCenter, YCenter,
+    ZCenter, XAxis, YAxis, ZAxis, Sampling, InField, SizeMin, SizeMax, DistMin, DistMax,
+    Sigmoid, StopAtDistMax, IncludeBoundary
+  };
+  static constexpr int kSlotCount = 25;
   struct Field {
     Type type = Type::Constant;
-    std::map<std::string, double> numbers;   // canonical option names
+    std::array<double, kSlotCount> slots = {};
     std::vector<int> fieldsList;             // Min, Max (FieldsList)
     std::vector<EntityId> entities;          // Distance, Constant, Restrict lists
     std::unique_ptr<MathExpression> expression;
     std::unique_ptr<PointCloud> samples;     // Distance
-    double number(const std::string& name) const;
+    double number(Slot s) const { return slots[static_cast<std::size_t>(s)]; }
   };
 
  private:

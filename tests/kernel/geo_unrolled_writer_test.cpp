@@ -62,6 +62,33 @@ TEST(GeoUnrolledWriter, HooksAddStatementsAfterEntities) {
             "Mesh.Algorithm = 6;\n");
 }
 
+TEST(GeoUnrolledWriter, WritesTransfiniteAndRecombineConstraints) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 0);
+  geo.addPoint(2, {1, 0, 0}, 0);
+  geo.addPoint(3, {1, 1, 0}, 0);
+  for (int i = 1; i <= 3; ++i) geo.addLine(i, i, i % 3 + 1);
+  geo.addCurveLoop(1, {1, 2, 3});
+  geo.addPlaneSurface(1, {1});
+  MeshConstraints constraints;
+  constraints.transfiniteCurves[1] = {30, TransfiniteCurve::Law::Progression, 1.2, true};
+  constraints.transfiniteCurves[2] = {5, TransfiniteCurve::Law::Bump, 0.25, false};
+  constraints.transfiniteSurfaces[1] = {{1, 2, 3}, TransfiniteSurface::Arrangement::Right};
+  constraints.recombinedSurfaces[1] = 45;
+  std::ostringstream out;
+  writeUnrolledGeo(geo, out, meshConstraintHooks(constraints));
+  const std::string text = out.str();
+  EXPECT_NE(text.find("Line(1) = {1, 2};\nTransfinite Curve {-1} = 30 Using Progression 1.2;\n"
+                      "Line(2) = {2, 3};\nTransfinite Curve {2} = 5 Using Bump 0.25;\n"
+                      "Line(3)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("Plane Surface(1) = {1};\nTransfinite Surface {1} = {1,2,3};\n"
+                      "Recombine Surface {1};\n"),
+            std::string::npos)
+      << text;
+}
+
 // The unit square extruded along z, as the reference writes it after the same script.
 TEST(GeoUnrolledWriter, WritesAnExtrudedCubeAsTheReferenceDoes) {
   GeoFactory geo;

@@ -177,3 +177,25 @@ TEST(DelaunayAlgorithm, RefinesToTheSameDensityAsTheReference) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(Recombine, KeepsEmbeddedCurves) {
+  PolygonModelBuilder b;
+  const std::vector<int> loop = b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1);
+  const int inner = b.line(b.point(0.3, 0.3, 0.1), b.point(0.7, 0.6, 0.1));
+  ModelSurface& s = b.surface({loop});
+  s.embeddedCurves.push_back(inner);
+  s.embeddedPoints = {};
+  b.model.meshConstraints().recombinedSurfaces[s.tag] = 45;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 2, mesh, log);
+  EXPECT_GT(count(mesh, 1).quads, 50u);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+}  // namespace
+}  // namespace geomesh

@@ -267,3 +267,49 @@ TEST(Recombine, CurvedSurfaceKeepsQuadranglesOnIt) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+// Whether a triangle of surface 1 has an edge between the nodes at a and b.
+bool hasEdge(const Mesh& mesh, Vec3 a, Vec3 b) {
+  const ElementBlock* t = mesh.find({2, 1})->findBlock(ElementType::Triangle3);
+  for (std::size_t e = 0; e < t->size(); ++e) {
+    const auto n = t->element(e);
+    int found = 0;
+    for (int k = 0; k < 3; ++k)
+      found += distance(mesh.node(n[k]), a) < 1e-9 || distance(mesh.node(n[k]), b) < 1e-9;
+    if (found == 2) return true;
+  }
+  return false;
+}
+
+TEST(TransfiniteSurface, DiagonalsFollowTheArrangement) {
+  using A = TransfiniteSurface::Arrangement;
+  // Cells of the 2 x 1 rectangle with 4 x 3 nodes are 2/3 wide and 1/2 high. First cell
+  // (0, 0) and the one above it (0, 1): true for a "left" diagonal (bottom right to top left).
+  const struct {
+    A arrangement;
+    bool firstLeft, aboveLeft;
+  } cases[] = {{A::Left, true, true},
+               {A::Right, false, false},
+               {A::AlternateLeft, false, true},
+               {A::AlternateRight, true, false}};
+  for (const auto& c : cases) {
+    Model model = rectangle(4, 3);
+    model.meshConstraints().transfiniteSurfaces[1].arrangement = c.arrangement;
+    model.meshConstraints().transfiniteCurves[3].coefficient = 1;
+    model.meshConstraints().transfiniteCurves[4] = law(3, TransfiniteCurve::Law::Progression, 1);
+    Mesh mesh;
+    SilentSink log;
+    generateMesh(model, {}, 2, mesh, log);
+    const double w = 2.0 / 3;
+    EXPECT_EQ(hasEdge(mesh, {w, 0, 0}, {0, 0.5, 0}), c.firstLeft);
+    EXPECT_EQ(hasEdge(mesh, {0, 0, 0}, {w, 0.5, 0}), !c.firstLeft);
+    EXPECT_EQ(hasEdge(mesh, {w, 0.5, 0}, {0, 1, 0}), c.aboveLeft);
+    EXPECT_EQ(hasEdge(mesh, {0, 0.5, 0}, {w, 1, 0}), !c.aboveLeft);
+  }
+}
+
+}  // namespace
+}  // namespace geomesh
