@@ -23,10 +23,18 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/scripts" "$work/msh" "$work/run"
 cp "$root"/tests/golden/scripts/*.geo "$root"/tutorials/*.geo "$work/scripts/"
-cp "$root"/tests/data/*.msh "$work/msh/" 2>/dev/null || true
+# Seed meshes for the reader, in every layout it reads: 4.1 and 2.2, ASCII and binary.
+for format in msh41 msh22; do
+  for bin in "" -bin; do
+    "$build/bin/geomesh" "$root/tests/golden/scripts/square.geo" -2 -v 0 -format $format $bin \
+      -clscale 4 -o "$work/msh/square-$format$bin.msh"
+    "$build/bin/geomesh" "$root/tests/golden/scripts/clscale.geo" -2 -v 0 -format $format $bin \
+      -clscale 8 -o "$work/msh/groups-$format$bin.msh"
+  done
+done
 cd "$work/run"  # scripts may write files (Printf > "file"): keep them here
 "$build/bin/fuzz_script" -seed=1 -runs="$runs" -timeout=10 -rss_limit_mb=4096 \
   -max_len=4096 "$work/scripts"
-"$build/bin/fuzz_msh_reader" -seed=1 -runs="$runs" -timeout=10 -rss_limit_mb=4096 \
-  -max_len=8192 "$work/msh"
-echo "fuzzing: $runs runs of each target, no crash"
+"$build/bin/fuzz_msh_reader" -seed=1 -runs=$((runs * 10)) -timeout=10 -rss_limit_mb=4096 \
+  -max_len=16384 "$work/msh"
+echo "fuzzing: $runs runs of the script front end, $((runs * 10)) of the MSH reader, no crash"
