@@ -80,6 +80,13 @@ def triangles(msh_path):
     return count
 
 
+def quality(geomesh, msh_path):
+    """(min, mean) gamma of a mesh file, as geomesh's summary of it reports."""
+    proc = subprocess.run([str(geomesh), str(msh_path), "-v", "4"], capture_output=True, text=True)
+    m = re.search(r"quality \(gamma\) min ([0-9.eE+-]+), mean ([0-9.eE+-]+)", proc.stderr)
+    return (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("cases", nargs="*", default=list(CASES))
@@ -93,7 +100,8 @@ def main():
                  "import sys, gmsh; gmsh.initialize(['gmsh'] + sys.argv[1:], run=True); gmsh.finalize()"]
     work = ROOT / "build" / "bench"
     work.mkdir(parents=True, exist_ok=True)
-    print(f"{'case':24} {'program':10} {'wall s':>8} {'stage s':>8} {'peak MiB':>9} {'triangles':>10} {'tri/s':>10}")
+    print(f"{'case':24} {'program':10} {'wall s':>8} {'stage s':>8} {'peak MiB':>9} {'triangles':>10} "
+          f"{'tri/s':>10} {'min gamma':>9} {'mean gamma':>10}")
     for name in args.cases:
         script, extra, stage = CASES[name]
         rows = {}
@@ -104,9 +112,11 @@ def main():
             st = stage_seconds(log, stage) if stage != "script" else wall
             tri = triangles(out) if stage == "2D" and out.exists() else 0
             rate = tri / st if tri and st else 0
+            qmin, qmean = quality(geomesh, out) if tri else (float("nan"), float("nan"))
             rows[program] = (wall, st, rss, tri, rate)
             st_text = f"{st:8.3f}" if st is not None else "       -"
-            print(f"{name:24} {program:10} {wall:8.3f} {st_text} {rss:9.1f} {tri:10d} {rate:10.0f}")
+            print(f"{name:24} {program:10} {wall:8.3f} {st_text} {rss:9.1f} {tri:10d} {rate:10.0f} "
+                  f"{qmin:9.4f} {qmean:10.5f}")
         g, r = rows["geomesh"], rows["reference"]
         speed = (r[1] / g[1]) if g[1] and r[1] else float("nan")
         print(f"{name:24} {'ratio':10} {r[0] / g[0]:8.2f}x {speed:7.2f}x {r[2] / g[2]:8.2f}x  (reference / geomesh)")

@@ -74,6 +74,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
   if (executeMeshSize(command, where)) return;
   if (executeGeometry(command, where)) return;
   if (executeShapeCommand(command, where)) return;
+  if (executeMeshConstraint(command, where)) return;
   if (isInterfaceOnly(head)) {
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": '" +
                          joined(command.words) + "' has no effect in batch mode");
@@ -133,6 +134,7 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
                          assign.path + "' has no effect in batch mode");
     return;
   }
+  if (executeFieldOption(assign, where)) return;
   if (!isOptionCategory(assign.path) || assign.index) {
     warn(where, "option '" + assign.path + "' is not supported yet; ignored");
     return;

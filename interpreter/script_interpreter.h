@@ -99,6 +99,12 @@ class Interpreter {
   std::optional<std::vector<EntityId>> shapeOperation(const ast::Expr& shape);
   bool executeShapeCommand(const ast::CommandStmt& command, const SourceLocation& where);
 
+  // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)
+  bool executeMeshConstraint(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineTransfiniteCurve(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineTransfiniteSurface(const ast::CommandStmt& command, const SourceLocation& where);
+  bool executeFieldOption(const ast::OptionAssignStmt& assign, const SourceLocation& where);
+
   // parameters (DefineConstant, DefineNumber, DefineString)
   void executeDefineConstant(const ast::DefineConstantStmt& define);
   Value defineNumber(const ast::Expr& expr);

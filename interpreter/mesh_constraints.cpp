@@ -1,0 +1,147 @@
+// Mesh constraints in scripts: Transfinite Curve/Surface, Recombine Surface, Field[n] = Type,
+// Field[n].Option = value, Background Field = n. They are recorded in the model's
+// MeshConstraints, which outlive synchronization, and read by the mesher.
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "interpreter/script_interpreter.h"
+#include "interpreter/session.h"
+#include "mesh/fields/math_expression.h"
+
+namespace geomesh {
+
+namespace {
+
+std::optional<TransfiniteCurve::Law> lawNamed(const std::string& word) {
+  if (word == "Progression") return TransfiniteCurve::Law::Progression;
+  if (word == "Bump") return TransfiniteCurve::Law::Bump;
+  if (word == "Beta") return TransfiniteCurve::Law::Beta;
+  return std::nullopt;
+}
+
+std::optional<TransfiniteSurface::Arrangement> arrangementNamed(const std::string& word) {
+  using A = TransfiniteSurface::Arrangement;
+  if (word == "Left") return A::Left;
+  if (word == "Right") return A::Right;
+  if (word == "AlternateLeft") return A::AlternateLeft;
+  if (word == "AlternateRight" || word == "Alternate" || word == "Alternated")
+    return A::AlternateRight;
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool Interpreter::executeMeshConstraint(const ast::CommandStmt& command,
+                                        const SourceLocation& where) {
+  const std::vector<std::string>& w = command.words;
+  if (w.size() == 2 && w[0] == "Transfinite" && command.shape) {
+    if (w[1] == "Curve" || w[1] == "Line") return defineTransfiniteCurve(command, where), true;
+    if (w[1] == "Surface") return defineTransfiniteSurface(command, where), true;
+    return false;
+  }
+  if (w.size() == 2 && w[0] == "Recombine" && w[1] == "Surface" && command.shape) {
+    const double angle = command.value ? evaluateNumber(*command.value) : 45;
+    for (int tag : shapeTags(*command.shape, 2))
+      session_.model().meshConstraints().recombinedSurfaces[std::abs(tag)] = angle;
+    return true;
+  }
+  if (w.size() == 1 && w[0] == "Field" && command.argStyle == ast::CommandStmt::Args::Bracket &&
+      command.args.size() == 1 && command.value) {
+    const int tag = static_cast<int>(std::lround(evaluateNumber(*command.args[0])));
+    // The type is a bare word (Field[1] = Distance;), sometimes a string.
+    const ast::Expr& rhs = *command.value;
+    const std::string type = rhs.kind == ast::ExprKind::String     ? rhs.text
+                             : rhs.kind == ast::ExprKind::Variable ? rhs.name.base
+                                                                   : evaluateString(rhs);
+    session_.model().meshConstraints().sizeFields[tag] = SizeFieldDefinition{type};
+    return true;
+  }
+  if (w.size() == 2 && w[0] == "Background" && w[1] == "Field" && command.value) {
+    session_.model().meshConstraints().backgroundField =
+        static_cast<int>(std::lround(evaluateNumber(*command.value)));
+    return true;
+  }
+  return false;
+}
+
+void Interpreter::defineTransfiniteCurve(const ast::CommandStmt& command,
+                                         const SourceLocation& where) {
+  if (!command.value) fail(where, "Transfinite Curve needs a number of nodes: {..} = n");
+  TransfiniteCurve law;
+  const double nodes = evaluateNumber(*command.value);
+  if (!(nodes >= 2)) fail(command.value->loc, "a transfinite curve needs at least 2 nodes");
+  law.nodes = static_cast<int>(nodes);
+  for (const ast::TailItem& item : command.tail) {
+    if (item.word == "Using" && !item.value) continue;
+    const auto kind = lawNamed(item.word);
+    if (!kind || !item.value)
+      fail(where, "expected 'Using Progression r', 'Using Bump r' or 'Using Beta r' after "
+                  "Transfinite Curve");
+    law.law = *kind;
+    law.coefficient = evaluateNumber(*item.value);
+  }
+  if (law.law == TransfiniteCurve::Law::Beta && !(law.coefficient > 1))
+    warn(where, "Using Beta needs a coefficient above 1; the nodes are evenly spaced");
+  for (int tag : shapeTags(*command.shape, 1)) {
+    TransfiniteCurve signedLaw = law;
+    signedLaw.reversed = tag < 0;
+    session_.model().meshConstraints().transfiniteCurves[std::abs(tag)] = signedLaw;
+  }
+}
+
+void Interpreter::defineTransfiniteSurface(const ast::CommandStmt& command,
+                                           const SourceLocation& where) {
+  TransfiniteSurface surface;
+  if (command.value) surface.corners = entityTags(*command.value);
+  for (const ast::TailItem& item : command.tail) {
+    const auto arrangement = arrangementNamed(item.word);
+    if (!arrangement || item.value)
+      fail(where, "expected Left, Right, AlternateLeft or AlternateRight after Transfinite "
+                  "Surface, not '" + item.word + "'");
+    surface.arrangement = *arrangement;
+  }
+  for (int& corner : surface.corners) corner = std::abs(corner);
+  for (int tag : shapeTags(*command.shape, 2))
+    session_.model().meshConstraints().transfiniteSurfaces[std::abs(tag)] = surface;
+}
+
+bool Interpreter::executeFieldOption(const ast::OptionAssignStmt& assign,
+                                     const SourceLocation& where) {
+  if (!assign.path.starts_with("Field.") || !assign.index) return false;
+  const int tag = static_cast<int>(std::lround(evaluateNumber(*assign.index)));
+  auto& fields = session_.model().meshConstraints().sizeFields;
+  const auto it = fields.find(tag);
+  if (it == fields.end()) {
+    warn(where, "Field[" + std::to_string(tag) + "] is not defined; option ignored");
+    return true;
+  }
+  const std::string option = assign.path.substr(6);
+  const Value value = evaluate(*assign.value);
+  if (value.isText()) {
+    if (value.kind() != Value::Kind::String || assign.op != "=")
+      fail(assign.value->loc, "Field option '" + option + "' takes one string");
+    if (option == "F" && it->second.type == "MathEval") {
+      try {
+        MathExpression check(value.strings()[0]);  // report a bad formula here, not when meshing
+      } catch (const ExpressionError& e) {
+        fail(assign.value->loc, std::string("bad MathEval formula: ") + e.what());
+      }
+    }
+    it->second.strings[option] = value.strings()[0];
+    return true;
+  }
+  std::vector<double>& numbers = it->second.numbers[option];
+  if (assign.op == "=") {
+    numbers = value.numbers();
+  } else if (assign.op == "+=") {
+    numbers.insert(numbers.end(), value.numbers().begin(), value.numbers().end());
+  } else {
+    fail(where, "Field options take '=' or '+='");
+  }
+  return true;
+}
+
+}  // namespace geomesh
