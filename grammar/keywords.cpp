@@ -25,8 +25,8 @@ constexpr std::string_view kCommandWords[] = {
 
 // Words that only appear after a shape: Point{1} In Surface{2}; ... Using Progression 2;
 constexpr std::string_view kTailWords[] = {
-    "AlternateLeft", "AlternateRight", "Alternated", "Beta", "Bump", "Left", "Progression",
-    "Right", "Using",
+    "Alternate", "AlternateLeft", "AlternateRight", "Alternated", "Beta",
+    "Bump",      "Left",          "Progression",    "Right",      "Using",
 };
 
 // Attribute names inside DefineConstant[...] / DefineNumber[...] / DefineString[...].

@@ -36,6 +36,9 @@ MeshOptions Session::meshOptions() const {
   m.elementOrder = static_cast<int>(o.number("Mesh.ElementOrder"));
   m.numThreads = static_cast<int>(o.number("General.NumThreads"));
   m.randomFactor = o.number("Mesh.RandomFactor");
+  m.recombineAll = o.number("Mesh.RecombineAll") != 0;
+  m.recombinationAlgorithm = static_cast<int>(o.number("Mesh.RecombinationAlgorithm"));
+  m.subdivisionAlgorithm = static_cast<int>(o.number("Mesh.SubdivisionAlgorithm"));
   return m;
 }
 

@@ -78,16 +78,39 @@ std::vector<std::uint64_t> embeddedEdges(const ModelSurface& surface, const Mesh
   return keys;
 }
 
-void meshOneSurface(const Model& model, const ModelSurface& surface, const MeshOptions& options,
-                    const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
+// What the 2D stage reads.
+struct SurfaceStage {
+  const Model& model;
+  const MeshOptions& options;
+  const SizeRules& rules;
+  const SizeFields& fields;
+  int dim;  // of the whole run
+  MessageSink& log;
+};
+
+// Quadrangles on the boundary of a volume would leave the tetrahedral mesher without a
+// closed triangulated shell: recombination is skipped there, with a warning.
+std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
+  std::optional<double> angle = recombinationAngle(stage.model, stage.options, tag);
+  if (angle && stage.dim >= 3 && !stage.model.upward({2, tag}).empty()) {
+    stage.log.warning("surface " + std::to_string(tag) +
+                      " bounds a volume meshed with tetrahedra: it is not recombined");
+    angle.reset();
+  }
+  return angle;
+}
+
+void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh,
                     std::vector<double>& nodeSizes) {
-  const std::optional<double> angle = recombinationAngle(model, options, surface.tag);
+  const Model& model = stage.model;
+  const MeshOptions& options = stage.options;
+  const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
   const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
   if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
     meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
     return;
   }
-  meshSurface(model, surface, rules, options.smoothing, mesh, nodeSizes, &fields,
+  meshSurface(model, surface, stage.rules, options.smoothing, mesh, nodeSizes, &stage.fields,
               options.algorithm2D);
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
@@ -109,9 +132,10 @@ bool wantsAllQuadrangles(const Model& model, const MeshOptions& options) {
   return options.recombineAll || !model.meshConstraints().recombinedSurfaces.empty();
 }
 
-void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRules& rules,
-                  const SizeFields& fields, Mesh& mesh, std::vector<double>& nodeSizes,
-                  MessageSink& log) {
+void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& nodeSizes) {
+  const Model& model = stage.model;
+  const MeshOptions& options = stage.options;
+  MessageSink& log = stage.log;
   constexpr int kFrontalDelaunay = 6;
   constexpr int kDelaunay = 5;
   if (options.algorithm2D != kFrontalDelaunay && options.algorithm2D != kDelaunay &&
@@ -122,7 +146,7 @@ void meshSurfaces(const Model& model, const MeshOptions& options, const SizeRule
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");
   for (const auto& [tag, surface] : model.surfaces())
-    meshOneSurface(model, surface, options, rules, fields, mesh, nodeSizes);
+    meshOneSurface(stage, surface, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
@@ -157,7 +181,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   }
   if (dim >= 2) {
     const StageTimer timer(2);
-    meshSurfaces(model, options, rules, fields, mesh, nodeSizes, log);
+    meshSurfaces({model, options, rules, fields, dim, log}, mesh, nodeSizes);
     if (wantsAllQuadrangles(model, options)) {
       if (dim == 2)
         subdivideIntoQuadrangles(model, mesh);

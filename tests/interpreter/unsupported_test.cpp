@@ -11,17 +11,6 @@ namespace {
 // script goes on.
 constexpr const char* kStatements[] = {
     "Circle(5) = {0, 0, 0, 0.5};",
-    "Transfinite Curve{1, 2} = 10 Using Progression 1.2;",
-    "Transfinite Curve{3} = 10 Using Bump 0.2;",
-    "Transfinite Surface{1} = {1, 2, 3, 4} Alternated;",
-    "Transfinite Surface{:};",
-    "Recombine Surface{1};",
-    "Field[1] = Distance;",
-    "Field[1].PointsList = {1};",
-    "Field[2] = Box;",
-    "Background Field = 2;",
-    "MeshSize{1, 2} = 0.05;",
-    "Characteristic Length{3} = 0.02;",
     "Smoother Surface{1} = 3;",
     "Reverse Surface{1};",
     "Save \"x.msh\";",
@@ -61,7 +50,7 @@ TEST(Unsupported, WarningsNameTheStatement) {
 
 TEST(Unsupported, AStatementInALoopWarnsOnce) {
   ScriptRun run;
-  run.run("For i In {1:5}\n  Recombine Surface{1};\nEndFor\n");
+  run.run("For i In {1:5}\n  Smoother Surface{1} = 3;\nEndFor\n");
   EXPECT_EQ(run.log.warnings.size(), 1u);
 }
 
