@@ -72,6 +72,8 @@ bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
     cl.saveAll = true;
   } else if (flag == "-check") {
     cl.check = true;
+  } else if (flag == "-allow_system_calls") {
+    cl.allowSystemCalls = true;
   } else if (flag == "-keep_partial") {
     cl.keepPartial = true;
   } else if (flag == "-v") {
@@ -140,6 +142,7 @@ Mesh:
 Script:
   -setnumber NAME VALUE  set a numeric parameter (overrides DefineConstant/DefineNumber)
   -setstring NAME VALUE  set a string parameter (overrides DefineString)
+  -allow_system_calls    let the script run shell commands (SystemCall); refused otherwise
 General:
   -nt N                  number of threads (General.NumThreads)
   -v N                   verbosity: 0 silent, 1 errors, 2 warnings, 4 information, 5 default, 99 debug

@@ -17,6 +17,7 @@ struct CommandLine {
   bool binary = false;           // -bin
   bool saveAll = false;          // -save_all
   bool check = false;            // -check
+  bool allowSystemCalls = false;  // -allow_system_calls: scripts may run shell commands
   bool keepPartial = false;      // -keep_partial: write what was meshed when meshing fails
   bool help = false;             // -help, -h
   bool version = false;          // -version

@@ -15,7 +15,10 @@ void ConsoleLog::info(std::string_view message) {
 
 void ConsoleLog::warning(std::string_view message) {
   ++warnings_;
-  if (verbosity_ >= 2) write("Warning : ", message);
+  if (verbosity_ < 2) return;
+  // A warning about a script statement already reads "file:line:col: warning: ...".
+  const bool located = message.find(": warning: ") != std::string_view::npos;
+  write(located ? "" : "Warning : ", message);
 }
 
 void ConsoleLog::debug(std::string_view message) {

@@ -13,13 +13,13 @@ constexpr std::string_view kCommandWords[] = {
     "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Error", "Exit",
     "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide",
     "Homology", "Include", "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm",
-    "MeshSize", "NewModel", "NonBlockingSystem", "OptimizeMesh", "PartitionMesh", "Periodic",
+    "MeshSize", "NewModel", "NonBlockingSystem", "NonBlockingSystemCall", "OptimizeMesh", "PartitionMesh", "Periodic",
     "Physical", "Physicals", "Plane", "Point", "PointsOf", "PostProcessing", "Print", "Printf",
     "QuadTriAddVerts", "QuadTriNoNewVerts", "Recombine", "Rectangle", "Recursive", "RefineMesh",
     "RelocateMesh", "RenumberMeshElements", "RenumberMeshNodes", "ReorientMesh", "Reverse",
     "Rotate", "Ruled", "Save", "SetChanged", "SetFactory", "SetNumber", "SetOrder", "SetString",
     "ShapeFromFile", "Show", "Sleep", "Smoother", "Solver", "Sphere", "Spline", "Surface",
-    "Symmetry", "SyncModel", "System", "ThruSections", "Torus", "Transfinite", "Translate", "View",
+    "Symmetry", "SyncModel", "System", "SystemCall", "ThruSections", "Torus", "Transfinite", "Translate", "View",
     "Volume", "Warning", "Wedge", "Wire",
 };
 

@@ -1,5 +1,6 @@
 // Statements introduced by keywords: Printf, Include, Exit, options, and everything that is
 // recognised but not supported (reported with a warning at its location).
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <filesystem>
@@ -71,6 +72,9 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
     return warn(where, message);
   }
   if (head == "SetNumber" || head == "SetString") return executeSetter(command, where);
+  if (head == "System" || head == "SystemCall" || head == "NonBlockingSystem" ||
+      head == "NonBlockingSystemCall")
+    return executeSystemCall(command, where);
   if (executeMeshSize(command, where)) return;
   if (executeGeometry(command, where)) return;
   if (executeShapeCommand(command, where)) return;
@@ -89,6 +93,23 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
     return;
   }
   warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
+}
+
+// SystemCall "command"; runs a shell command, only when the user allowed it on the command
+// line (-allow_system_calls): a script received from elsewhere runs nothing by surprise.
+void Interpreter::executeSystemCall(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.args.size() != 1)
+    fail(where, "'" + command.words.front() + "' takes one command, as in SystemCall \"ls\";");
+  const std::string shellCommand = evaluateString(*command.args[0]);
+  if (!session_.systemCallsAllowed()) {
+    warn(where, "'" + command.words.front() + "' refused: running \"" + shellCommand +
+                    "\" needs -allow_system_calls on the command line; ignored");
+    return;
+  }
+  session_.out().flush();
+  const int status = std::system(shellCommand.c_str());
+  if (status != 0)
+    warn(where, "\"" + shellCommand + "\" exited with status " + std::to_string(status));
 }
 
 void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLocation& where) {

@@ -118,6 +118,7 @@ class Interpreter {
   [[noreturn]] void failTooManyIterations(const SourceLocation& where) const;
   // MeshSize{points} = size; (Characteristic Length{..}); false when not that statement.
   bool executeMeshSize(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeSystemCall(const ast::CommandStmt& command, const SourceLocation& where);
   void warn(const SourceLocation& where, const std::string& message) const;
   std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) const;
   std::string directoryOf(const std::string& file) const;

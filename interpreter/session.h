@@ -41,6 +41,10 @@ class Session {
   std::map<std::string, double>& numberOverrides() { return numberOverrides_; }
   std::map<std::string, std::string>& stringOverrides() { return stringOverrides_; }
 
+  // Whether scripts may run shell commands (SystemCall "..."); off unless the user asks.
+  bool systemCallsAllowed() const { return systemCallsAllowed_; }
+  void allowSystemCalls(bool allow) { systemCallsAllowed_ = allow; }
+
   // Parses and evaluates a script; throws ScriptError (file:line:col diagnostics).
   void runFile(const std::string& path);
   void runText(const std::string& text, const std::string& fileName);
@@ -73,6 +77,7 @@ class Session {
   std::map<EntityId, Origin> origins_;
   std::vector<std::string> originFiles_;
   std::uint32_t lastOriginFile_ = 0;
+  bool systemCallsAllowed_ = false;
 };
 
 }  // namespace geomesh

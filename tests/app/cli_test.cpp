@@ -337,3 +337,21 @@ TEST_F(Cli, AnUnsupportedOutputExtensionIsRefusedBeforeMeshing) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST_F(Cli, SystemCallsAreRefusedUnlessAllowed) {
+  const fs::path marker = dir_ / "ran.txt";
+  fs::path geo = write("sys.geo", "SystemCall \"touch " + marker.string() + "\";\nPrintf(\"on\");\n");
+  ASSERT_EQ(run({geo.string(), "-0"}), 0) << err_.str();
+  EXPECT_FALSE(fs::exists(marker));
+  EXPECT_EQ(out_.str(), "on\n");
+  EXPECT_NE(err_.str().find("sys.geo:1:1: warning: 'SystemCall' refused"), std::string::npos)
+      << err_.str();
+  ASSERT_EQ(run({geo.string(), "-0", "-allow_system_calls"}), 0) << err_.str();
+  EXPECT_TRUE(fs::exists(marker));
+}
+
+}  // namespace
+}  // namespace geomesh
