@@ -1,5 +1,5 @@
 // The .geo lexer. re2c turns this file into generated/grammar/lexer.cpp at build time.
-#include "grammar/lexer.h"
+#include "grammar/tokenizer.h"
 #include "grammar/keywords.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "grammar/parse.h"
 
-#include "grammar/lexer.h"
+#include "grammar/tokenizer.h"
 
 namespace geomesh {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "grammar/lexer.h"
+#include "grammar/tokenizer.h"
 
 namespace geomesh::grammar {
 

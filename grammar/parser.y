@@ -20,7 +20,7 @@ namespace geomesh { class Lexer; }
 }
 
 %code {
-#include "grammar/lexer.h"
+#include "grammar/tokenizer.h"
 #include "grammar/parse_helpers.h"
 
 namespace geomesh {

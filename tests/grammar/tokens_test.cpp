@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "grammar/lexer.h"
+#include "grammar/tokenizer.h"
 
 namespace geomesh {
 namespace {
