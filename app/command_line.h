@@ -23,10 +23,9 @@ struct CommandLine {
   bool version = false;          // -version
   bool helpOptions = false;      // -help-options
   int verbosity = 5;             // -v
-  // Options in the order given: name, value (numbers), applied before and after the script
-  // so that the command line wins over the script, as in Gmsh.
+  // Options in the order given: name, value, applied before and after the script so that
+  // the command line wins over the script, as in Gmsh.
   std::vector<std::pair<std::string, double>> numberOptions;
-  std::vector<std::pair<std::string, std::string>> stringOptions;
   // -setnumber / -setstring: parameter overrides.
   std::vector<std::pair<std::string, double>> setNumbers;
   std::vector<std::pair<std::string, std::string>> setStrings;

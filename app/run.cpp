@@ -12,7 +12,6 @@
 #include "interpreter/diagnostics.h"
 #include "interpreter/session.h"
 #include "kernel/geo/geo_unrolled_writer.h"
-#include "kernel/geometry_error.h"
 #include "mesh/generate.h"
 #include "mesh/io/msh_reader.h"
 #include "mesh/io/msh_writer.h"
@@ -45,20 +44,11 @@ std::string formatSeconds(double s) {
 // Every option with its default and help, one per line, as a script would set it.
 void listOptions(std::ostream& out) {
   OptionRegistry options;
-  for (const OptionRegistry::Option& o : options.all()) {
-    out << o.name << " = ";
-    if (o.type != OptionType::String) {
-      out << o.defaultNumber;
-    } else {
-      out << '"' << o.defaultText << '"';
-    }
-    out << ";  // " << o.help << '\n';
-  }
+  for (const OptionRegistry::Option& o : options.all()) out << optionListingLine(o) << '\n';
 }
 
 void applyOptions(const CommandLine& cl, OptionRegistry& options) {
   for (const auto& [name, value] : cl.numberOptions) options.setNumber(name, value);
-  for (const auto& [name, value] : cl.stringOptions) options.setString(name, value);
 }
 
 // The output file: -o, else the script's path with its extension replaced by ".msh".
@@ -268,19 +258,10 @@ int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ost
     return runSession(cl, out, log);
   } catch (const ScriptError& e) {
     log.diagnostic(e.what());
-  } catch (const MshReadError& e) {
-    log.error(e.what());
-  } catch (const MeshError& e) {
-    log.error(e.what());
-  } catch (const GeometryError& e) {
-    log.error(e.what());
-  } catch (const CommandLineError& e) {
-    log.error(e.what());
-  } catch (const std::out_of_range& e) {
-    log.error(e.what());
   } catch (const std::bad_alloc&) {
     log.error("out of memory");
   } catch (const std::exception& e) {
+    // Mesh, geometry, file and command-line errors: their messages name what failed.
     log.error(e.what());
   }
   return 1;
