@@ -32,6 +32,12 @@ target_include_directories(geomesh_tetgen SYSTEM INTERFACE ${TETGEN_INCLUDE_DIR}
 target_compile_definitions(geomesh_tetgen INTERFACE TETLIBRARY)
 target_link_libraries(geomesh_tetgen INTERFACE ${TETGEN_LIBRARY})
 
+# LEMON (header-only use): maximum matchings for quadrangle recombination.
+find_path(LEMON_INCLUDE_DIR lemon/matching.h)
+geomesh_require(LEMON_INCLUDE_DIR "LEMON headers" "liblemon-dev")
+add_library(geomesh_lemon INTERFACE)
+target_include_directories(geomesh_lemon SYSTEM INTERFACE ${LEMON_INCLUDE_DIR})
+
 find_path(OCC_INCLUDE_DIR Standard_Version.hxx PATH_SUFFIXES opencascade)
 geomesh_require(OCC_INCLUDE_DIR "OpenCASCADE headers" "libocct-foundation-dev")
 set(GEOMESH_OCC_LIBS TKernel TKMath TKG2d TKG3d TKGeomBase TKBRep TKGeomAlgo TKTopAlgo TKPrim

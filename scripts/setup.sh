@@ -11,6 +11,7 @@ packages=(
   re2c bison
   libcgal-dev libgmp-dev libmpfr-dev
   libtet1.5-dev
+  liblemon-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libgtest-dev
   clang libclang-rt-14-dev
