@@ -10,20 +10,6 @@ namespace geomesh {
 
 namespace {
 
-double triangleArea(Vec3 a, Vec3 b, Vec3 c) { return 0.5 * norm(cross(b - a, c - a)); }
-
-// Measure (length, area or volume) of one first-order element.
-double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIndex> n) {
-  auto p = [&](int i) { return mesh.node(n[i]); };
-  switch (type) {
-    case ElementType::Line2: return distance(p(0), p(1));
-    case ElementType::Triangle3: return triangleArea(p(0), p(1), p(2));
-    case ElementType::Quad4: return triangleArea(p(0), p(1), p(2)) + triangleArea(p(0), p(2), p(3));
-    case ElementType::Tet4: return std::abs(dot(p(1) - p(0), cross(p(2) - p(0), p(3) - p(0)))) / 6;
-    default: return 0;
-  }
-}
-
 void addMeasures(const Mesh& mesh, MeshSummary& s) {
   for (const auto& [id, em] : mesh.entities()) {
     for (const ElementBlock& block : em.blocks) {

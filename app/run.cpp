@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "app/command_line.h"
@@ -110,14 +111,11 @@ bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
   return true;
 }
 
-// Line `line` (1-based) of a file, for quoting in a diagnostic; empty if unreadable.
+// Line `line` of a script file, for quoting in a diagnostic; empty if unreadable.
 std::string sourceLine(const std::string& path, int line) {
   std::ifstream in(path, std::ios::binary);
-  std::string text;
-  for (int i = 1; i <= line; ++i)
-    if (!std::getline(in, text)) return "";
-  if (!text.empty() && text.back() == '\r') text.pop_back();
-  return text;
+  SourceFile file{path, {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()}};
+  return std::string(file.lineText(line));
 }
 
 // -0: the evaluated geometry as a flat script, <script>.geo_unrolled unless -o says otherwise.

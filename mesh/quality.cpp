@@ -106,4 +106,16 @@ QualityStats meshQuality(const Mesh& mesh, int dim, QualityMeasure measure) {
   return stats;
 }
 
+double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIndex> nodes) {
+  auto p = [&](int i) { return mesh.node(nodes[i]); };
+  auto triangleArea = [](Vec3 a, Vec3 b, Vec3 c) { return 0.5 * norm(cross(b - a, c - a)); };
+  switch (type) {
+    case ElementType::Line2: return distance(p(0), p(1));
+    case ElementType::Triangle3: return triangleArea(p(0), p(1), p(2));
+    case ElementType::Quad4: return triangleArea(p(0), p(1), p(2)) + triangleArea(p(0), p(2), p(3));
+    case ElementType::Tet4: return std::abs(tetVolume6(p(0), p(1), p(2), p(3))) / 6;
+    default: return 0;
+  }
+}
+
 }  // namespace geomesh

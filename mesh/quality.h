@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 
 #include "kernel/vec3.h"
 #include "mesh/mesh.h"
@@ -29,5 +30,9 @@ struct QualityStats {
 // Statistics over all linear triangles (dim 2) or tetrahedra (dim 3) of the mesh; triangle
 // SICN is unsigned here (a Mesh alone does not know which side of a surface is up).
 QualityStats meshQuality(const Mesh& mesh, int dim, QualityMeasure measure);
+
+// Length, area or volume of one first-order element (Line2, Triangle3, Quad4 split along its
+// first diagonal, Tet4); 0 for other types.
+double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIndex> nodes);
 
 }  // namespace geomesh
