@@ -15,7 +15,7 @@ struct OptionSpec {
   double number;          // default of number and colour options
   std::string_view text;  // default of string options
   std::string_view help;
-  std::string_view alias;  // old name still accepted, or empty
+  std::string_view aliases;  // old names still accepted, separated by spaces; or empty
 };
 
 std::span<const OptionSpec> generalOptions();

@@ -17,7 +17,11 @@ OptionRegistry::Option fromSpec(const OptionSpec& spec) {
   option.number = option.defaultNumber = spec.number;
   option.text = option.defaultText = spec.text;
   option.help = spec.help;
-  if (!spec.alias.empty()) option.aliases.emplace_back(spec.alias);
+  for (std::string_view rest = spec.aliases; !rest.empty();) {
+    const auto space = rest.find(' ');
+    option.aliases.emplace_back(rest.substr(0, space));
+    rest = space == std::string_view::npos ? std::string_view() : rest.substr(space + 1);
+  }
   return option;
 }
 

@@ -1,4 +1,4 @@
-// The Geometry. options: name, type, default, help line, old name. Defaults follow the
+// The Geometry. options: name, type, default, help line, old names. Defaults follow the
 // reference manual; the help lines are this project's own words.
 #include "stdlib/option_table.h"
 
@@ -8,7 +8,7 @@ std::span<const OptionSpec> geometryOptions() {
   using enum OptionType;
   static constexpr OptionSpec kOptions[] = {
       {"Geometry.DoubleClickedPointCommand", String, 0, "ONELAB", "geometry setting: double clicked point command", ""},
-      {"Geometry.DoubleClickedCurveCommand", String, 0, "ONELAB", "geometry setting: double clicked curve command", ""},
+      {"Geometry.DoubleClickedCurveCommand", String, 0, "ONELAB", "command run when a curve is double-clicked in a graphical interface", "Geometry.DoubleClickedLineCommand"},
       {"Geometry.DoubleClickedSurfaceCommand", String, 0, "ONELAB", "geometry setting: double clicked surface command", ""},
       {"Geometry.DoubleClickedVolumeCommand", String, 0, "ONELAB", "geometry setting: double clicked volume command", ""},
       {"Geometry.OCCTargetUnit", String, 0, "", "length unit of imported CAD shapes", ""},
@@ -27,8 +27,8 @@ std::span<const OptionSpec> geometryOptions() {
       {"Geometry.Clip", Number, 0, "", "geometry setting: clip", ""},
       {"Geometry.CopyMeshingMethod", Number, 0, "", "copy meshing constraints along with duplicated entities", ""},
       {"Geometry.Curves", Number, 1, "", "show geometry curves", ""},
-      {"Geometry.CurveLabels", Number, 0, "", "show the tags of curves", "Geometry.CurveNumbers"},
-      {"Geometry.CurveSelectWidth", Number, 3, "", "geometry setting: curve select width", ""},
+      {"Geometry.CurveLabels", Number, 0, "", "show the tags of curves", "Geometry.CurveNumbers Geometry.LineNumbers"},
+      {"Geometry.CurveSelectWidth", Number, 3, "", "width in pixels of a curve being selected", "Geometry.LineSelectWidth"},
       {"Geometry.CurveType", Number, 0, "", "geometry setting: curve type", ""},
       {"Geometry.CurveWidth", Number, 2, "", "geometry setting: curve width", ""},
       {"Geometry.DoubleClickedEntityTag", Number, 0, "", "geometry setting: double clicked entity tag", ""},
@@ -52,7 +52,7 @@ std::span<const OptionSpec> geometryOptions() {
       {"Geometry.OCCBooleanGlue", Number, 0, "", "geometry setting: OCC boolean glue", ""},
       {"Geometry.OCCBooleanNonDestructive", Number, 0, "", "geometry setting: OCC boolean non destructive", ""},
       {"Geometry.OCCBooleanPreserveNumbering", Number, 1, "", "keep entity tags stable across boolean operations", ""},
-      {"Geometry.OCCBooleanSimplify", Number, 1, "", "geometry setting: OCC boolean simplify", ""},
+      {"Geometry.OCCBooleanSimplify", Number, 1, "", "merge coplanar faces and collinear edges after OpenCASCADE boolean operations", "Geometry.OCCUnionUnify"},
       {"Geometry.OCCBoundsUseStl", Number, 0, "", "geometry setting: OCC bounds use STL", ""},
       {"Geometry.OCCBrepFormatVersion", Number, 1, "", "geometry setting: OCC brep format version", ""},
       {"Geometry.OCCDisableStl", Number, 0, "", "geometry setting: OCC disable STL", ""},
@@ -106,7 +106,7 @@ std::span<const OptionSpec> geometryOptions() {
       {"Geometry.VolumeLabels", Number, 0, "", "show the tags of volumes", "Geometry.VolumeNumbers"},
       {"Geometry.VolumeType", Number, 0, "", "geometry setting: volume type", ""},
       {"Geometry.Color.Points", Color, 5921370, "", "colour of points ({r,g,b} packed as a number)", ""},
-      {"Geometry.Color.Curves", Color, 255, "", "colour of curves ({r,g,b} packed as a number)", ""},
+      {"Geometry.Color.Curves", Color, 255, "", "colour of curves ({r,g,b} packed as a number)", "Geometry.Color.Lines"},
       {"Geometry.Color.Surfaces", Color, 8421504, "", "colour of surfaces ({r,g,b} packed as a number)", ""},
       {"Geometry.Color.Volumes", Color, 13158400, "", "colour of volumes ({r,g,b} packed as a number)", ""},
       {"Geometry.Color.Selection", Color, 16711680, "", "colour of selection ({r,g,b} packed as a number)", ""},

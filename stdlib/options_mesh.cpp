@@ -1,4 +1,4 @@
-// The Mesh. options: name, type, default, help line, old name. Defaults follow the
+// The Mesh. options: name, type, default, help line, old names. Defaults follow the
 // reference manual; the help lines are this project's own words.
 #include "stdlib/option_table.h"
 
@@ -17,7 +17,7 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.AvgQuality", Number, 0, "", "mesh setting: avg quality", ""},
       {"Mesh.BdfFieldFormat", Number, 1, "", "mesh setting: BDF field format", ""},
       {"Mesh.Binary", Number, 0, "", "write binary files when the format allows it", ""},
-      {"Mesh.BoundaryLayerFanElements", Number, 5, "", "mesh setting: boundary layer fan elements", ""},
+      {"Mesh.BoundaryLayerFanElements", Number, 5, "", "number of elements in a boundary-layer fan", "Mesh.BoundaryLayerFanPoints"},
       {"Mesh.CgnsImportOrder", Number, 1, "", "order of elements read from CGNS files", ""},
       {"Mesh.CgnsImportIgnoreBC", Number, 0, "", "mesh setting: CGNS import ignore BC", ""},
       {"Mesh.CgnsImportIgnoreSolution", Number, 0, "", "mesh setting: CGNS import ignore solution", ""},
@@ -28,7 +28,7 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.Clip", Number, 0, "", "clip the mesh by the active clipping planes", ""},
       {"Mesh.ColorCarousel", Number, 1, "", "colour elements by 0 type, 1 elementary entity, 2 physical group, 3 partition", ""},
       {"Mesh.CompoundClassify", Number, 1, "", "how compound entities are reparametrized", ""},
-      {"Mesh.CompoundMeshSizeFactor", Number, 0.5, "", "mesh setting: compound mesh size factor", ""},
+      {"Mesh.CompoundMeshSizeFactor", Number, 0.5, "", "mesh size factor applied to the entities of a compound", "Mesh.CompoundCharacteristicLengthFactor"},
       {"Mesh.CpuTime", Number, 0, "", "mesh setting: cpu time", ""},
       {"Mesh.CreateTopologyMsh2", Number, 0, "", "mesh setting: create topology MSH 2", ""},
       {"Mesh.DrawSkinOnly", Number, 0, "", "mesh setting: draw skin only", ""},
@@ -44,7 +44,7 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.HighOrderFixBoundaryNodes", Number, 0, "", "mesh setting: high order fix boundary nodes", ""},
       {"Mesh.HighOrderIterMax", Number, 100, "", "mesh setting: high order iter max", ""},
       {"Mesh.HighOrderNumLayers", Number, 6, "", "mesh setting: high order number of layers", ""},
-      {"Mesh.HighOrderOptimize", Number, 0, "", "optimize high-order meshes (0 none, 1 optimization, 2 elastic+optimization, 3 elastic, 4 fast curving)", "Mesh.ElementOrderOptimize"},
+      {"Mesh.HighOrderOptimize", Number, 0, "", "optimize high-order meshes (0 none, 1 optimization, 2 elastic+optimization, 3 elastic, 4 fast curving)", ""},
       {"Mesh.HighOrderPassMax", Number, 25, "", "mesh setting: high order pass max", ""},
       {"Mesh.HighOrderPeriodic", Number, 0, "", "mesh setting: high order periodic", ""},
       {"Mesh.HighOrderPoissonRatio", Number, 0.33, "", "mesh setting: high order poisson ratio", ""},
@@ -81,7 +81,7 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.MeshSizeFactor", Number, 1, "", "factor applied to every element size", "Mesh.CharacteristicLengthFactor"},
       {"Mesh.MeshSizeMin", Number, 0, "", "lower bound on the element size", "Mesh.CharacteristicLengthMin"},
       {"Mesh.MeshSizeMax", Number, 1e+22, "", "upper bound on the element size", "Mesh.CharacteristicLengthMax"},
-      {"Mesh.MeshSizeFromCurvature", Number, 0, "", "target number of elements per 2*Pi radians of curvature (0: off)", "Mesh.CharacteristicLengthFromCurvature"},
+      {"Mesh.MeshSizeFromCurvature", Number, 0, "", "target number of elements per 2*Pi radians of curvature (0: off)", "Mesh.CharacteristicLengthFromCurvature Mesh.MinimumElementsPerTwoPi"},
       {"Mesh.MeshSizeFromCurvatureIsotropic", Number, 0, "", "mesh setting: mesh size from curvature isotropic", ""},
       {"Mesh.MeshSizeFromPoints", Number, 1, "", "use the sizes given on geometry points", "Mesh.CharacteristicLengthFromPoints"},
       {"Mesh.MeshSizeFromParametricPoints", Number, 0, "", "use sizes given at the points defining parametric curves", "Mesh.CharacteristicLengthFromParametricPoints"},
@@ -91,9 +91,9 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.MetisObjective", Number, 1, "", "mesh setting: metis objective", ""},
       {"Mesh.MetisMinConn", Number, -1, "", "mesh setting: metis min conn", ""},
       {"Mesh.MetisRefinementAlgorithm", Number, 2, "", "mesh setting: metis refinement algorithm", ""},
-      {"Mesh.MinLineNodes", Number, 2, "", "mesh setting: min line nodes", ""},
-      {"Mesh.MinCircleNodes", Number, 7, "", "mesh setting: min circle nodes", ""},
-      {"Mesh.MinCurveNodes", Number, 3, "", "mesh setting: min curve nodes", ""},
+      {"Mesh.MinLineNodes", Number, 2, "", "fewest nodes on a straight line", "Mesh.MinimumLineNodes"},
+      {"Mesh.MinCircleNodes", Number, 7, "", "fewest nodes on a circle or an ellipse", "Mesh.MinimumCircleNodes Mesh.MinimumCirclePoints"},
+      {"Mesh.MinCurveNodes", Number, 3, "", "fewest nodes on a curve that is neither a line, a circle nor an ellipse", "Mesh.MinimumCurveNodes Mesh.MinimumCurvePoints"},
       {"Mesh.MinQuality", Number, 0, "", "mesh setting: min quality", ""},
       {"Mesh.MshFileVersion", Number, 4.1, "", "version of the MSH format written", ""},
       {"Mesh.MedFileMinorVersion", Number, -1, "", "mesh setting: MED file minor version", ""},
@@ -184,7 +184,7 @@ std::span<const OptionSpec> meshOptions() {
       {"Mesh.StlLinearDeflection", Number, 0.001, "", "mesh setting: STL linear deflection", ""},
       {"Mesh.StlLinearDeflectionRelative", Number, 1, "", "mesh setting: STL linear deflection relative", ""},
       {"Mesh.StlOneSolidPerSurface", Number, 0, "", "mesh setting: STL one solid per surface", ""},
-      {"Mesh.StlRemoveBadTriangles", Number, 0, "", "mesh setting: STL remove bad triangles", ""},
+      {"Mesh.StlRemoveBadTriangles", Number, 0, "", "drop duplicate and degenerate triangles of STL files", "Mesh.StlRemoveDuplicateTriangles"},
       {"Mesh.SubdivisionAlgorithm", Number, 0, "", "split elements: 0 none, 1 all quadrangles, 2 all hexahedra, 3 barycentric", ""},
       {"Mesh.SurfaceEdges", Number, 1, "", "show the edges of surface elements", ""},
       {"Mesh.SurfaceFaces", Number, 0, "", "show the faces of surface elements", ""},

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "stdlib/options.h"
 
@@ -45,6 +47,45 @@ TEST(OptionRegistry, OldNamesAreAliases) {
                             "Mesh.CharacteristicLengthExtendFromBoundary"})
     EXPECT_TRUE(options.hasNumber(alias)) << alias;
   EXPECT_EQ(options.find("Mesh.CharacteristicLengthFactor")->name, "Mesh.MeshSizeFactor");
+}
+
+// Old names the reference still accepts, each with the option it stands for and its default.
+TEST(OptionRegistry, EveryOldNameReachesItsOption) {
+  OptionRegistry options;
+  const std::tuple<const char*, const char*, double> aliases[] = {
+      {"Mesh.MinimumCircleNodes", "Mesh.MinCircleNodes", 7},
+      {"Mesh.MinimumCirclePoints", "Mesh.MinCircleNodes", 7},
+      {"Mesh.MinimumCurveNodes", "Mesh.MinCurveNodes", 3},
+      {"Mesh.MinimumCurvePoints", "Mesh.MinCurveNodes", 3},
+      {"Mesh.MinimumLineNodes", "Mesh.MinLineNodes", 2},
+      {"Mesh.MinimumElementsPerTwoPi", "Mesh.MeshSizeFromCurvature", 0},
+      {"Mesh.CompoundCharacteristicLengthFactor", "Mesh.CompoundMeshSizeFactor", 0.5},
+      {"Mesh.BoundaryLayerFanPoints", "Mesh.BoundaryLayerFanElements", 5},
+      {"Mesh.StlRemoveDuplicateTriangles", "Mesh.StlRemoveBadTriangles", 0},
+      {"Geometry.LineNumbers", "Geometry.CurveLabels", 0},
+      {"Geometry.LineSelectWidth", "Geometry.CurveSelectWidth", 3},
+      {"Geometry.OCCUnionUnify", "Geometry.OCCBooleanSimplify", 1},
+      {"Geometry.Color.Lines", "Geometry.Color.Curves", 255}};
+  for (const auto& [alias, name, value] : aliases) {
+    ASSERT_NE(options.find(alias), nullptr) << alias;
+    EXPECT_EQ(options.find(alias)->name, name) << alias;
+    EXPECT_DOUBLE_EQ(options.number(alias), value) << alias;
+  }
+  options.setNumber("Mesh.MinimumCirclePoints", 12);
+  EXPECT_EQ(options.number("Mesh.MinCircleNodes"), 12);
+  EXPECT_EQ(options.number("Mesh.MinimumCircleNodes"), 12);
+  EXPECT_EQ(options.find("Geometry.DoubleClickedLineCommand")->name,
+            "Geometry.DoubleClickedCurveCommand");
+  EXPECT_EQ(options.suggestions("Mesh.MinimumCircleNode").front(), "Mesh.MinimumCircleNodes");
+}
+
+// The listing names every old name of an option.
+TEST(OptionRegistry, ListingShowsEveryOldName) {
+  OptionRegistry options;
+  const std::string line = optionListingLine(*options.find("Mesh.MinCircleNodes"));
+  EXPECT_EQ(line.rfind("Mesh.MinCircleNodes = 7; // ", 0), 0u) << line;
+  EXPECT_NE(line.find("(old name: Mesh.MinimumCircleNodes)"), std::string::npos) << line;
+  EXPECT_NE(line.find("(old name: Mesh.MinimumCirclePoints)"), std::string::npos) << line;
 }
 
 TEST(OptionRegistry, UnknownNamesThrowAndAreCaseSensitive) {
