@@ -204,6 +204,7 @@ int runMeshFile(const CommandLine& cl, ConsoleLog& log) {
 int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   if (isMeshFile(cl.files.front())) return runMeshFile(cl, log);
   Session session(log, out);
+  session.options().setNumber("General.Verbosity", cl.verbosity);
   session.allowSystemCalls(cl.allowSystemCalls);
   for (const auto& [name, value] : cl.setNumbers) session.numberOverrides()[name] = value;
   for (const auto& [name, value] : cl.setStrings) session.stringOverrides()[name] = value;

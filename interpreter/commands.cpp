@@ -75,6 +75,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
   if (head == "System" || head == "SystemCall" || head == "NonBlockingSystem" ||
       head == "NonBlockingSystemCall")
     return executeSystemCall(command, where);
+  if (executeModelCommand(command, where)) return;
   if (executeMeshSize(command, where)) return;
   if (executeGeometry(command, where)) return;
   if (executeShapeCommand(command, where)) return;
@@ -87,10 +88,6 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
   if (head == "SetFactory" && command.args.size() == 1) {
     const std::string factory = evaluateString(*command.args[0]);
     if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
-  }
-  if (head == "Mesh" && command.words.size() == 1) {
-    warn(where, "'Mesh' in a script is not supported yet; ignored (mesh with -1, -2 or -3)");
-    return;
   }
   warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
 }
@@ -118,7 +115,8 @@ void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLoc
   const std::string line = command.args.size() == 1 ? evaluateString(*command.args[0])
                                                     : format(command.args, where);
   if (!command.redirectTarget) {
-    session_.out() << line << '\n';
+    // Script output is a "direct" message: shown from verbosity 3 up, as in Gmsh.
+    if (session_.options().number("General.Verbosity") >= 3) session_.out() << line << '\n';
     return;
   }
   std::filesystem::path path = evaluateString(*command.redirectTarget);

@@ -99,6 +99,13 @@ class Interpreter {
   std::optional<std::vector<EntityId>> shapeOperation(const ast::Expr& shape);
   bool executeShapeCommand(const ast::CommandStmt& command, const SourceLocation& where);
 
+  // the whole model and its mesh: Mesh n, Save, Merge, Delete Model, ... (model_commands.cpp)
+  bool executeModelCommand(const ast::CommandStmt& command, const SourceLocation& where);
+  void meshNow(const ast::Expr& dimension, const SourceLocation& where);
+  void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
+  void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
+  bool deleteByName(const ast::Expr& what, const SourceLocation& where);
+
   // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)
   bool executeMeshConstraint(const ast::CommandStmt& command, const SourceLocation& where);
   void defineTransfiniteCurve(const ast::CommandStmt& command, const SourceLocation& where);

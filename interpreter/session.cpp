@@ -47,6 +47,13 @@ void Session::generate(int dim) {
   generateMesh(model_, meshOptions(), dim, mesh_, log_);
 }
 
+void Session::clearModel() {
+  geo_.clear();
+  model_ = Model();
+  mesh_ = Mesh();
+  origins_.clear();
+}
+
 void Session::recordOrigin(EntityId entity, const SourceLocation& where) {
   // Scripts define entities file after file: the last file name is nearly always the one.
   if (lastOriginFile_ >= originFiles_.size() || originFiles_[lastOriginFile_] != where.file) {

@@ -55,6 +55,8 @@ class Session {
   MeshOptions meshOptions() const;
   // Synchronizes, then meshes up to `dim`; throws MeshError.
   void generate(int dim);
+  // Forgets every entity, mesh constraint and mesh element (Delete Model; NewModel;).
+  void clearModel();
 
   // Where the script defined a curve, surface or volume, so that a failure met later (while
   // meshing) can point at the statement. Null when unknown.

@@ -1,0 +1,165 @@
+// Statements that act on the whole model or its mesh while the script runs: Mesh n; Save and
+// Print "file"; Merge "file"; Delete Model / All / Variables / Options / <name>; NewModel;
+// SyncModel.
+#include <filesystem>
+#include <fstream>
+
+#include "interpreter/diagnostics.h"
+#include "interpreter/script_interpreter.h"
+#include "interpreter/session.h"
+#include "kernel/geo/geo_unrolled_writer.h"
+#include "mesh/generate.h"
+#include "mesh/io/msh_writer.h"
+
+namespace geomesh {
+
+namespace {
+
+std::string extensionOf(const std::filesystem::path& path) {
+  return path.extension().string();
+}
+
+MshWriteOptions mshOptions(const OptionRegistry& options) {
+  MshWriteOptions w;
+  w.saveAll = options.number("Mesh.SaveAll") != 0;
+  w.binary = options.number("Mesh.Binary") != 0;
+  w.version = options.number("Mesh.MshFileVersion") >= 4 ? 4.1 : 2.2;
+  return w;
+}
+
+// Writes through a temporary file renamed into place, so a failure leaves nothing behind.
+template <class Write>
+bool writeFileAtomically(const std::filesystem::path& path, Write write) {
+  const std::filesystem::path partial = path.string() + ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    if (out) write(out);
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(partial, ignored);
+      return false;
+    }
+  }
+  std::error_code failed;
+  std::filesystem::rename(partial, path, failed);
+  return !failed;
+}
+
+}  // namespace
+
+bool Interpreter::executeModelCommand(const ast::CommandStmt& command,
+                                      const SourceLocation& where) {
+  const auto& w = command.words;
+  const bool bare = command.argStyle == ast::CommandStmt::Args::Bare && command.args.size() == 1;
+  if (w.size() == 1 && w[0] == "Mesh" && bare) {
+    meshNow(*command.args[0], where);
+    return true;
+  }
+  if (w.size() == 1 && (w[0] == "Save" || w[0] == "Print") && bare) {
+    saveFile(command, where);
+    return true;
+  }
+  if (w.size() == 1 && w[0] == "Merge" && bare) {
+    mergeFile(command, where);
+    return true;
+  }
+  if (w.size() == 1 && (w[0] == "NewModel" || w[0] == "SyncModel") && command.args.empty()) {
+    // The built-in kernel's entities reach the model before every use: SyncModel has
+    // nothing left to do.
+    if (w[0] == "NewModel") session_.clearModel();
+    return true;
+  }
+  if (w.size() == 1 && (w[0] == "RenumberMeshNodes" || w[0] == "RenumberMeshElements") &&
+      command.args.empty()) {
+    // Written meshes are always numbered consecutively from 1: nothing to renumber.
+    return true;
+  }
+  if (w.size() == 1 && w[0] == "Delete" && bare && !command.shape)
+    return deleteByName(*command.args[0], where);
+  return false;
+}
+
+// Mesh n; meshes the model as it stands, up to dimension n, with the options set so far.
+void Interpreter::meshNow(const ast::Expr& dimension, const SourceLocation& where) {
+  const double dim = evaluateNumber(dimension);
+  if (dim != 0 && dim != 1 && dim != 2 && dim != 3)
+    fail(dimension.loc, "'Mesh' takes a dimension 0, 1, 2 or 3");
+  try {
+    session_.generate(static_cast<int>(dim));
+  } catch (const MeshError& error) {
+    // Point at the statement that defined the entity when the script did, else at Mesh.
+    fail(session_.origin(error.entity).value_or(where), error.what());
+  }
+}
+
+// Save "file"; (and Print, which Gmsh treats alike) writes the mesh, the changed options or
+// the unrolled geometry, by the file's extension, relative to the script's directory.
+void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation& where) {
+  const ast::Expr& name = *command.args[0];
+  std::filesystem::path path = evaluateString(name);
+  if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
+  const std::string ext = extensionOf(path);
+  const std::string shown = path.lexically_normal().string();
+  bool written = false;
+  if (ext == ".msh") {
+    // Nothing meshed yet: the file still lists the entities, as Gmsh's does.
+    if (session_.mesh().nodeCount() == 0) session_.synchronize();
+    const MshWriteOptions options = mshOptions(session_.options());
+    written = writeFileAtomically(path, [&](std::ostream& out) {
+      writeMsh(out, session_.model(), session_.mesh(), options);
+    });
+  } else if (ext == ".opt") {
+    written = writeFileAtomically(path, [&](std::ostream& out) {
+      for (const auto& option : session_.options().all())
+        if (option.number != option.defaultNumber || option.text != option.defaultText)
+          out << optionListingLine(option) << '\n';
+    });
+  } else if (ext == ".geo_unrolled") {
+    written = writeFileAtomically(path, [&](std::ostream& out) {
+      writeUnrolledGeo(session_.geo(), out,
+                       meshConstraintHooks(session_.model().meshConstraints()));
+    });
+  } else {
+    warn(where, "'" + command.words[0] + "' cannot write '" + shown + "': this format is not " +
+                    "supported yet (only .msh, .opt and .geo_unrolled); ignored");
+    return;
+  }
+  if (!written) fail(name.loc, "cannot write '" + shown + "'");
+  session_.log().info("Wrote '" + shown + "'");
+}
+
+// Merge "file.geo"; reads the script as Include does. Meshes and other data files are not
+// merged into a scripted model.
+void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocation& where) {
+  const std::string file = evaluateString(*command.args[0]);
+  if (extensionOf(file) == ".geo") return executeInclude(command, where);
+  warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo scripts are merged); ignored");
+}
+
+// Delete Model; Delete All; Delete Variables; Delete Options; Delete name;
+bool Interpreter::deleteByName(const ast::Expr& what, const SourceLocation& where) {
+  if (what.kind != ast::ExprKind::Variable) return false;
+  const std::string name = resolveName(what.name);
+  if (what.name.suffixes.empty() && (name == "Model" || name == "All")) {
+    session_.clearModel();
+    return true;
+  }
+  if (what.name.suffixes.empty() && name == "Variables") {
+    variables_.clear();
+    return true;
+  }
+  if (what.name.suffixes.empty() && name == "Options") {
+    // Back to the defaults, except how much the user asked to see.
+    const double verbosity = session_.options().number("General.Verbosity");
+    session_.options().reset();
+    session_.options().setNumber("General.Verbosity", verbosity);
+    optionChanged("Geometry.Tolerance");
+    return true;
+  }
+  if (variables_.erase(name) == 0)
+    warn(where, "'Delete " + name + "': no variable '" + name + "' to delete; ignored");
+  return true;
+}
+
+}  // namespace geomesh

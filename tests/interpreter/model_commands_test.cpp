@@ -1,0 +1,191 @@
+// Statements acting on the whole model while a script runs: Mesh n, Save, Merge, Delete Model,
+// NewModel, Delete Variables / Options / name, and Printf's dependence on the verbosity.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "mesh/io/msh_reader.h"
+#include "mesh/quality.h"
+#include "script_runner.h"
+
+namespace geomesh::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kUnitSquare = R"(
+Point(1) = {0, 0, 0, 0.25}; Point(2) = {1, 0, 0, 0.25};
+Point(3) = {1, 1, 0, 0.25}; Point(4) = {0, 1, 0, 0.25};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+)";
+
+class ModelCommands : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("geomesh_model_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs `text` as main.geo in the scratch directory.
+  std::string runMain(ScriptRun& run, const std::string& text) {
+    return run.run(text, (dir_ / "main.geo").string());
+  }
+  std::string read(const std::string& name) const {
+    std::ifstream in(dir_ / name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  fs::path dir_;
+};
+
+double triangleArea(const Mesh& mesh) {
+  double area = 0;
+  for (const auto& [entity, part] : mesh.entities()) {
+    const ElementBlock* block = part.findBlock(ElementType::Triangle3);
+    if (!block) continue;
+    for (std::size_t e = 0; e < block->size(); ++e)
+      area += elementMeasure(mesh, ElementType::Triangle3,
+                             std::span(block->nodes).subspan(3 * e, 3));
+  }
+  return area;
+}
+
+TEST_F(ModelCommands, MeshInAScriptMeshesTheModelAsItStands) {
+  ScriptRun run;
+  const std::string out = runMain(run, std::string(kUnitSquare) + R"(
+Mesh 1;
+Printf("after 1D: %g", 1);
+Mesh 2;
+Printf("meshed");
+)");
+  EXPECT_EQ(out, "after 1D: 1\nmeshed\n");
+  const Mesh& mesh = run.session.mesh();
+  EXPECT_GT(mesh.elementCount(2), 20u);
+  EXPECT_GT(mesh.elementCount(1), 12u);
+  EXPECT_NEAR(triangleArea(mesh), 1.0, 1e-12);
+}
+
+TEST_F(ModelCommands, MeshTakesADimensionFromZeroToThree) {
+  ScriptRun run;
+  EXPECT_THROW(runMain(run, std::string(kUnitSquare) + "Mesh 4;"), ScriptError);
+}
+
+TEST_F(ModelCommands, SaveWritesTheMeshNextToTheScript) {
+  ScriptRun run;
+  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.msh\";\n");
+  ASSERT_TRUE(fs::exists(dir_ / "out.msh"));
+  Model model;
+  Mesh mesh;
+  readMshFile((dir_ / "out.msh").string(), model, mesh);
+  EXPECT_EQ(mesh.nodeCount(), run.session.mesh().nodeCount());
+  EXPECT_EQ(mesh.elementCount(2), run.session.mesh().elementCount(2));
+  EXPECT_NEAR(triangleArea(mesh), 1.0, 1e-12);
+  EXPECT_FALSE(fs::exists(dir_ / "out.msh.partial"));
+}
+
+TEST_F(ModelCommands, SaveFollowsTheMshVersionOption) {
+  ScriptRun run;
+  runMain(run, std::string(kUnitSquare) +
+                   "Mesh 2;\nMesh.MshFileVersion = 2.2;\nSave StrCat(\"old\", \".msh\");\n");
+  EXPECT_EQ(read("old.msh").rfind("$MeshFormat\n2.2 0 8\n", 0), 0u) << read("old.msh");
+}
+
+TEST_F(ModelCommands, SaveOptionsListsOnlyTheChangedOnes) {
+  ScriptRun run;
+  runMain(run, "Mesh.MeshSizeMax = 0.5;\nGeometry.Tolerance = 1e-6;\nSave \"o.opt\";\n");
+  const std::string text = read("o.opt");
+  EXPECT_NE(text.find("Mesh.MeshSizeMax = 0.5;"), std::string::npos) << text;
+  EXPECT_NE(text.find("Geometry.Tolerance = 1e-06;"), std::string::npos) << text;
+  EXPECT_EQ(text.find("Mesh.Algorithm ="), std::string::npos) << text;
+}
+
+TEST_F(ModelCommands, SaveUnrolledGeometry) {
+  ScriptRun run;
+  runMain(run, std::string(kUnitSquare) + "Save \"flat.geo_unrolled\";\n");
+  const std::string text = read("flat.geo_unrolled");
+  EXPECT_NE(text.find("Plane Surface(1)"), std::string::npos) << text;
+}
+
+TEST_F(ModelCommands, SaveInAnUnwrittenFormatWarnsAndWritesNothing) {
+  ScriptRun run;
+  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.vtk\";\nPrint \"shot.png\";\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.vtk"));
+  EXPECT_FALSE(fs::exists(dir_ / "shot.png"));
+  ASSERT_EQ(run.log.warnings.size(), 2u);
+  EXPECT_NE(run.log.warnings[0].find("cannot write"), std::string::npos);
+  EXPECT_NE(run.log.warnings[0].find("out.vtk"), std::string::npos);
+}
+
+TEST_F(ModelCommands, MergeReadsAScriptLikeInclude) {
+  std::ofstream(dir_ / "part.geo") << "b = a + 1;\nPrintf(\"in part\");\n";
+  ScriptRun run;
+  EXPECT_EQ(runMain(run, "a = 1;\nMerge \"part.geo\";\nPrintf(\"b=%g\", b);\n"),
+            "in part\nb=2\n");
+}
+
+TEST_F(ModelCommands, MergeOfAMeshWarns) {
+  ScriptRun run;
+  runMain(run, "Merge \"other.msh\";\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_NE(run.log.warnings[0].find("'Merge' of 'other.msh'"), std::string::npos);
+}
+
+TEST_F(ModelCommands, DeleteModelAndNewModelStartAfresh) {
+  ScriptRun run;
+  const std::string out = runMain(run, std::string(kUnitSquare) + R"(
+x = 5;
+Mesh 2;
+Delete Model;
+Printf("%g %g %g x=%g", newp, newl, news, x);
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Line(7) = {1, 2};
+NewModel;
+Printf("%g %g", newp, newl);
+Point(3) = {0, 0, 0};
+Delete All;
+Printf("%g", newp);
+)");
+  EXPECT_EQ(out, "1 1 1 x=5\n1 1\n1\n");
+  EXPECT_EQ(run.session.mesh().nodeCount(), 0u);
+}
+
+TEST_F(ModelCommands, DeleteVariablesAndOneVariable) {
+  ScriptRun run;
+  EXPECT_EQ(runMain(run, R"(
+x = 5; y[] = {1, 2}; z = 3;
+Delete z;
+Printf("%g %g %g", Exists(x), Exists(y), Exists(z));
+Delete Variables;
+Printf("%g %g", Exists(x), Exists(y));
+)"),
+            "1 1 0\n0 0\n");
+}
+
+TEST_F(ModelCommands, DeleteOptionsRestoresTheDefaults) {
+  ScriptRun run;
+  EXPECT_EQ(runMain(run, "Mesh.MeshSizeMax = 3;\nDelete Options;\nPrintf(\"%g\", Mesh.MeshSizeMax);\n"),
+            "1e+22\n");
+}
+
+// Script output is a "direct" message: at verbosity 2 and below it is not shown, but Printf
+// into a file still writes.
+TEST_F(ModelCommands, PrintfFollowsTheVerbosity) {
+  ScriptRun run;
+  run.session.options().setNumber("General.Verbosity", 2);
+  EXPECT_EQ(runMain(run, "Printf(\"shown?\");\nPrintf(\"kept %g\", 1) > \"p.txt\";\n"), "");
+  EXPECT_EQ(read("p.txt"), "kept 1\n");
+  ScriptRun loud;
+  loud.session.options().setNumber("General.Verbosity", 3);
+  EXPECT_EQ(runMain(loud, "Printf(\"shown\");\n"), "shown\n");
+}
+
+}  // namespace
+}  // namespace geomesh::testing
