@@ -1,6 +1,6 @@
-// Mesh constraints in scripts: Transfinite Curve/Surface, Recombine Surface, Field[n] = Type,
-// Field[n].Option = value, Background Field = n. They are recorded in the model's
-// MeshConstraints, which outlive synchronization, and read by the mesher.
+// Mesh constraints in scripts: Transfinite Curve/Surface, Recombine Surface, MeshAlgorithm
+// Surface, Field[n] = Type, Field[n].Option = value, Background Field = n. They are recorded
+// in the model's MeshConstraints, which outlive synchronization, and read by the mesher.
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -46,6 +46,13 @@ bool Interpreter::executeMeshConstraint(const ast::CommandStmt& command,
     const double angle = command.value ? evaluateNumber(*command.value) : 45;
     for (int tag : shapeTags(*command.shape, 2))
       session_.model().meshConstraints().recombinedSurfaces[std::abs(tag)] = angle;
+    return true;
+  }
+  if (w.size() == 2 && w[0] == "MeshAlgorithm" && w[1] == "Surface" && command.shape &&
+      command.value) {
+    const int algorithm = static_cast<int>(std::lround(evaluateNumber(*command.value)));
+    for (int tag : shapeTags(*command.shape, 2))
+      session_.model().meshConstraints().surfaceAlgorithms[std::abs(tag)] = algorithm;
     return true;
   }
   if (w.size() == 1 && w[0] == "Field" && command.argStyle == ast::CommandStmt::Args::Bracket &&

@@ -77,6 +77,7 @@ struct MeshConstraints {
   std::map<int, TransfiniteCurve> transfiniteCurves = {};
   std::map<int, TransfiniteSurface> transfiniteSurfaces = {};
   std::map<int, double> recombinedSurfaces = {};  // tag -> Recombine Surface{t} = angle (deg)
+  std::map<int, int> surfaceAlgorithms = {};      // tag -> MeshAlgorithm Surface{t} = n
   std::map<int, SizeFieldDefinition> sizeFields = {};
   int backgroundField = 0;  // Background Field = tag; 0: none
 };

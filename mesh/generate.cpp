@@ -100,6 +100,49 @@ std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
   return angle;
 }
 
+// The name of a 2D algorithm of the Mesh.Algorithm list that geomesh does not have.
+const char* missingAlgorithmName(int algorithm) {
+  switch (algorithm) {
+    case algorithm2d::kBamg: return "BAMG";
+    case algorithm2d::kPacking: return "Packing of Parallelograms";
+    case algorithm2d::kQuasiStructuredQuads: return "Quasi-structured Quad";
+    default: return nullptr;
+  }
+}
+
+bool isAvailable(int algorithm) {
+  using namespace algorithm2d;
+  for (int a : {kMeshAdapt, kAutomatic, kInitialMeshOnly, kDelaunay, kFrontalDelaunay,
+                kFrontalDelaunayQuads})
+    if (algorithm == a) return true;
+  return false;
+}
+
+// "N (name) is not available" or "N is not a 2D meshing algorithm".
+std::string whyUnavailable(int algorithm) {
+  const char* name = missingAlgorithmName(algorithm);
+  if (!name) return std::to_string(algorithm) + " is not a 2D meshing algorithm";
+  return std::to_string(algorithm) + " (" + name + ") is not available";
+}
+
+// MeshAlgorithm Surface{t} = n, else Mesh.Algorithm; what is not available falls back to
+// Frontal-Delaunay (the global option's warning is given once by meshSurfaces). Automatic
+// is Delaunay on planes and MeshAdapt on the other surfaces.
+int surfaceAlgorithm(const SurfaceStage& stage, const ModelSurface& surface) {
+  const auto& chosen = stage.model.meshConstraints().surfaceAlgorithms;
+  int algorithm = stage.options.algorithm2D;
+  if (const auto it = chosen.find(surface.tag); it != chosen.end()) {
+    algorithm = it->second;
+    if (!isAvailable(algorithm))
+      stage.log.warning("MeshAlgorithm of surface " + std::to_string(surface.tag) + ": " +
+                        whyUnavailable(algorithm) + "; meshed with Frontal-Delaunay (6)");
+  }
+  if (!isAvailable(algorithm)) return algorithm2d::kFrontalDelaunay;
+  if (algorithm != algorithm2d::kAutomatic) return algorithm;
+  const bool plane = surface.geometry && surface.geometry->isPlane();
+  return plane ? algorithm2d::kDelaunay : algorithm2d::kMeshAdapt;
+}
+
 void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh,
                     std::vector<double>& nodeSizes) {
   const Model& model = stage.model;
@@ -111,7 +154,7 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
     return;
   }
   meshSurface(model, surface, stage.rules, options.smoothing, mesh, nodeSizes, &stage.fields,
-              options.algorithm2D);
+              surfaceAlgorithm(stage, surface));
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
   const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
@@ -136,12 +179,13 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& no
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   MessageSink& log = stage.log;
-  constexpr int kFrontalDelaunay = 6;
-  constexpr int kDelaunay = 5;
-  if (options.algorithm2D != kFrontalDelaunay && options.algorithm2D != kDelaunay &&
-      !model.surfaces().empty())
-    log.warning("Mesh.Algorithm " + std::to_string(options.algorithm2D) +
-                " is not available: surfaces are meshed with Frontal-Delaunay (6)");
+  const auto& chosen = model.meshConstraints().surfaceAlgorithms;
+  const bool anyByOption =
+      std::any_of(model.surfaces().begin(), model.surfaces().end(),
+                  [&](const auto& entry) { return !chosen.contains(entry.first); });
+  if (!isAvailable(options.algorithm2D) && anyByOption)
+    log.warning("Mesh.Algorithm " + whyUnavailable(options.algorithm2D) +
+                ": surfaces are meshed with Frontal-Delaunay (6)");
   if (options.subdivisionAlgorithm == 2 || options.subdivisionAlgorithm == 3)
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");

@@ -5,11 +5,13 @@
 #include <cstdlib>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "mesh/constrained_delaunay.h"
 #include "mesh/curve_mesher.h"
 #include "mesh/frontal_refinement.h"
 #include "mesh/generate.h"
+#include "mesh/mesh_adapt.h"
 #include "mesh/smoothing.h"
 #include "mesh/surface_metric.h"
 
@@ -121,33 +123,56 @@ std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules
   return sizes;
 }
 
-// Copies the inside triangles and their new vertices into the surface's EntityMesh.
-void storeMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-               const SurfaceInput& in, const std::vector<double>& sizes, const WorkFrame& frame,
+// The domain's triangles of a triangulation, with all its points.
+PlanarMesh planarMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
+                      std::vector<double> sizes) {
+  PlanarMesh out{{tri.points().begin(), tri.points().end()}, {}, std::move(sizes)};
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
+    if (inside[t])
+      for (std::uint32_t i = 0; i < 3; ++i) out.triangles.push_back(tri.vertex(3 * t + i));
+  return out;
+}
+
+// Copies the triangles and their new vertices into the surface's EntityMesh.
+void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame& frame,
                const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh,
                std::vector<double>& nodeSizes) {
   constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   const std::uint32_t boundaryEnd = first + static_cast<std::uint32_t>(in.nodes.size());
-  std::vector<NodeIndex> globalOf(tri.pointCount(), kNone);
+  const std::uint32_t pointCount = static_cast<std::uint32_t>(planar.points.size());
+  std::vector<NodeIndex> globalOf(pointCount, kNone);
   for (std::uint32_t k = 0; k < in.nodes.size(); ++k) globalOf[k + first] = in.nodes[k];
-  std::vector<std::uint8_t> used(tri.pointCount(), 0);
-  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
-    if (inside[t])
-      for (int i = 0; i < 3; ++i) used[tri.vertex(3 * t + i)] = 1;
-  for (std::uint32_t v = boundaryEnd; v < tri.pointCount(); ++v) {
+  std::vector<std::uint8_t> used(pointCount, 0);
+  for (std::uint32_t v : planar.triangles) used[v] = 1;
+  for (std::uint32_t v = boundaryEnd; v < pointCount; ++v) {
     if (!used[v]) continue;
-    const Vec2 uv = frame.toParam(tri.point(v));
+    const Vec2 uv = frame.toParam(planar.points[v]);
     const NodeIndex node = mesh.addNode(g.point(uv));
     globalOf[v] = node;
     em.nodes.push_back(node);
     em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
     if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
-    nodeSizes[node] = sizes[v];
+    nodeSizes[node] = planar.sizes[v];
   }
   ElementBlock& triangles = em.block(ElementType::Triangle3);
-  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
-    if (inside[t])
-      for (int i = 0; i < 3; ++i) triangles.nodes.push_back(globalOf[tri.vertex(3 * t + i)]);
+  for (std::uint32_t v : planar.triangles) triangles.nodes.push_back(globalOf[v]);
+}
+
+// Fills the boundary triangulation with the algorithm asked for.
+PlanarMesh meshInterior(Triangulation2D tri, std::vector<std::uint8_t> inside,
+                        std::vector<double> sizes, const SurfaceInput& in, int algorithm2D,
+                        int smoothingPasses, const SurfaceMetric* metric,
+                        const WorkPlaneSize* field) {
+  const std::uint32_t firstMovable =
+      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
+  if (algorithm2D == algorithm2d::kMeshAdapt)
+    return adaptMesh(tri, inside, sizes, firstMovable, smoothingPasses, metric, field);
+  if (algorithm2D != algorithm2d::kInitialMeshOnly) {
+    (algorithm2D == algorithm2d::kDelaunay ? refineDelaunay : refineFrontal)(tri, inside, sizes,
+                                                                             metric, field);
+    smoothTriangulation(tri, inside, firstMovable, smoothingPasses, metric);
+  }
+  return planarMesh(tri, inside, std::move(sizes));
 }
 
 }  // namespace
@@ -171,24 +196,21 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   if (std::find(inside.begin(), inside.end(), 1) == inside.end())
     throw MeshError(id, "the boundary encloses no area");
 
-  std::vector<double> sizes = boundarySizes(in, rules, mesh, nodeSizes);
   const SurfaceMetric metric(g, frame);
   const WorkPlaneSize field = [&](Vec2 work) {
     return rules.finish(fields->at(g.point(frame.toParam(work)), id));
   };
   const bool withField = fields && fields->hasBackground();
-  constexpr int kDelaunay = 5;
-  (algorithm2D == kDelaunay ? refineDelaunay : refineFrontal)(
-      tri, inside, sizes, g.isPlane() ? nullptr : &metric, withField ? &field : nullptr);
-  smoothTriangulation(tri, inside,
-                      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size()),
-                      smoothingPasses, g.isPlane() ? nullptr : &metric);
+  const PlanarMesh planar =
+      meshInterior(std::move(tri), std::move(inside), boundarySizes(in, rules, mesh, nodeSizes),
+                   in, algorithm2D, smoothingPasses, g.isPlane() ? nullptr : &metric,
+                   withField ? &field : nullptr);
 
   EntityMesh& em = mesh.entity(id);
   em.nodes.clear();
   em.parametric.clear();
   em.blocks.clear();
-  storeMesh(tri, inside, in, sizes, frame, g, em, mesh, nodeSizes);
+  storeMesh(planar, in, frame, g, em, mesh, nodeSizes);
 }
 
 }  // namespace geomesh

@@ -1,0 +1,590 @@
+#include "mesh/mesh_adapt.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+#include "mesh/predicates.h"
+
+namespace geomesh {
+namespace {
+
+// An edge is split above this length and collapsed below that one, in target sizes. With a
+// ratio of 2 between them, halving a long edge never makes a collapsible one.
+constexpr double kSplitAbove = 1.4;
+constexpr double kCollapseBelow = 0.7;
+constexpr int kMaxPasses = 40;
+// The passes stop when this many in a row leave at least as many edges out of range.
+constexpr int kPassesWithoutProgress = 3;
+// A collapse may lower the quality of the triangles around it down to this, no further.
+constexpr double kCollapseQuality = 0.2;
+
+std::uint32_t nextCorner(std::uint32_t c) {
+  return c % 3 == 2 ? c - 2 : c + 1;
+}
+std::uint32_t prevCorner(std::uint32_t c) {
+  return c % 3 == 0 ? c + 2 : c - 1;
+}
+Vec2 sub(Vec2 a, Vec2 b) {
+  return {a.u - b.u, a.v - b.v};
+}
+double norm(Vec2 a) {
+  return std::sqrt(a.u * a.u + a.v * a.v);
+}
+Vec2 midpoint(Vec2 a, Vec2 b) {
+  return {0.5 * (a.u + b.u), 0.5 * (a.v + b.v)};
+}
+
+// The size to divide a length by to count it in target sizes, for an edge whose ends ask
+// for ha and hb with the size varying linearly between them (1 / the mean of 1 / h).
+double edgeSize(double ha, double hb) {
+  if (std::abs(ha - hb) <= 1e-6 * (ha + hb)) return 0.5 * (ha + hb);
+  return (hb - ha) / std::log(hb / ha);
+}
+
+// gamma (twice the inradius over the circumradius) of a triangle, 0 if it is not positive.
+double gamma(Vec2 a, Vec2 b, Vec2 c) {
+  const double area = 0.5 * ((b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u));
+  if (!(area > 0)) return 0;
+  const double la = norm(sub(c, b)), lb = norm(sub(a, c)), lc = norm(sub(b, a));
+  return 16 * area * area / (la * lb * lc * (la + lb + lc));
+}
+
+// Target sizes extended from the boundary: linear over the triangles of the boundary's
+// constrained triangulation, as a background mesh.
+class BoundarySizes {
+ public:
+  BoundarySizes(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
+                const std::vector<double>& sizes)
+      : tri_(tri), inside_(inside), sizes_(sizes) {}
+
+  // The size at x; `hint` is a domain triangle to start the search from, and becomes the
+  // one x lies in.
+  double at(Vec2 x, std::uint32_t& hint) {
+    const std::uint32_t t = tri_.locate(x, hint);
+    if (t != kNone && inside_[t]) hint = t;
+    const std::uint32_t v[3] = {tri_.vertex(3 * hint), tri_.vertex(3 * hint + 1),
+                                tri_.vertex(3 * hint + 2)};
+    const Vec2 a = tri_.point(v[0]), b = tri_.point(v[1]), c = tri_.point(v[2]);
+    const double det = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
+    double l1 = ((x.u - a.u) * (c.v - a.v) - (x.v - a.v) * (c.u - a.u)) / det;
+    double l2 = ((b.u - a.u) * (x.v - a.v) - (b.v - a.v) * (x.u - a.u)) / det;
+    double l0 = 1 - l1 - l2;
+    // Rounding may put x a hair outside: clamp to the triangle.
+    l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
+    const double sum = l0 + l1 + l2;
+    return (l0 * sizes_[v[0]] + l1 * sizes_[v[1]] + l2 * sizes_[v[2]]) / sum;
+  }
+
+ private:
+  Triangulation2D tri_;  // a copy: locate() draws its own random numbers
+  const std::vector<std::uint8_t>& inside_;
+  const std::vector<double>& sizes_;
+};
+
+// The domain's triangles in corner form, as in Triangulation2D (corner 3t+i: vertex i of t
+// and the edge opposite it), with the local modifications MeshAdapt needs. The neighbour of
+// a boundary edge is kNone. Removed triangles are reused.
+class LocalMesh {
+ public:
+  LocalMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside);
+
+  Vec2 point(std::uint32_t v) const { return points_[v]; }
+  std::size_t pointCount() const { return points_.size(); }
+  std::uint32_t addPoint(Vec2 p) {
+    points_.push_back(p);
+    triangleOf_.push_back(kNone);
+    return static_cast<std::uint32_t>(points_.size() - 1);
+  }
+  void movePoint(std::uint32_t v, Vec2 p) { points_[v] = p; }
+  bool inMesh(std::uint32_t v) const { return triangleOf_[v] != kNone; }
+
+  std::size_t triangleCount() const { return alive_.size(); }
+  bool alive(std::uint32_t t) const { return alive_[t] != 0; }
+  std::uint32_t vertex(std::uint32_t c) const { return vertex_[c]; }
+  std::uint32_t neighbour(std::uint32_t c) const { return neighbour_[c]; }
+  EdgeKind kind(std::uint32_t c) const { return kind_[c]; }
+
+  // The corners of v in its triangles, counter-clockwise around v. Returns false when v is
+  // on the boundary; the first triangle is then the one after the boundary edge.
+  bool ring(std::uint32_t v, std::vector<std::uint32_t>& corners) const;
+  // A corner opposite the edge {a, b}, or kNone.
+  std::uint32_t findEdge(std::uint32_t a, std::uint32_t b) const;
+  // Splits the free edge of `corner` at new vertex m: its two triangles become four.
+  void split(std::uint32_t corner, std::uint32_t m);
+  // Replaces the two triangles of the free edge of `corner` by those of the other diagonal.
+  void flip(std::uint32_t corner);
+  // Removes interior vertex v, whose counter-clockwise corners are `ringOfV`, by merging it
+  // into its neighbour w; the two triangles of edge (v, w) disappear.
+  void collapse(std::uint32_t v, std::uint32_t w, const std::vector<std::uint32_t>& ringOfV);
+
+ private:
+  std::uint32_t cornerOf(std::uint32_t t, std::uint32_t v) const {
+    return 3 * t + (vertex_[3 * t] == v ? 0 : vertex_[3 * t + 1] == v ? 1 : 2);
+  }
+  std::uint32_t newTriangle();
+  void setTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  void link(std::uint32_t c1, std::uint32_t c2, EdgeKind k);
+
+  std::vector<Vec2> points_;
+  std::vector<std::uint32_t> triangleOf_;  // per vertex: a triangle around it, or kNone
+  std::vector<std::uint32_t> vertex_, neighbour_;
+  std::vector<EdgeKind> kind_;
+  std::vector<std::uint8_t> alive_;
+  std::vector<std::uint32_t> free_;
+  mutable std::vector<std::uint32_t> scratch_;
+};
+
+LocalMesh::LocalMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside)
+    : points_(tri.points().begin(), tri.points().end()), triangleOf_(tri.pointCount(), kNone) {
+  std::vector<std::uint32_t> index(tri.triangleCount(), kNone);
+  std::uint32_t count = 0;
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
+    if (inside[t]) index[t] = count++;
+  vertex_.resize(3 * count);
+  neighbour_.resize(3 * count);
+  kind_.resize(3 * count);
+  alive_.assign(count, 1);
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t) {
+    if (!inside[t]) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t c = 3 * index[t] + i;
+      const std::uint32_t across = tri.neighbour(3 * t + i);
+      vertex_[c] = tri.vertex(3 * t + i);
+      neighbour_[c] = across != kNone && inside[across / 3] ? 3 * index[across / 3] + across % 3
+                                                            : kNone;
+      kind_[c] = tri.kind(3 * t + i);
+      triangleOf_[vertex_[c]] = index[t];
+    }
+  }
+}
+
+bool LocalMesh::ring(std::uint32_t v, std::vector<std::uint32_t>& corners) const {
+  corners.clear();
+  const std::uint32_t first = cornerOf(triangleOf_[v], v);
+  // Turn clockwise to the boundary, if there is one: the walk starts there.
+  std::uint32_t start = first;
+  bool closed = true;
+  for (;;) {
+    const std::uint32_t across = neighbour_[prevCorner(start)];
+    if (across == kNone) {
+      closed = false;
+      break;
+    }
+    const std::uint32_t c = cornerOf(across / 3, v);
+    if (c == first) break;
+    start = c;
+  }
+  std::uint32_t c = closed ? first : start;
+  for (;;) {
+    corners.push_back(c);
+    const std::uint32_t across = neighbour_[nextCorner(c)];
+    if (across == kNone) break;
+    c = cornerOf(across / 3, v);
+    if (c == corners.front()) break;
+  }
+  return closed;
+}
+
+std::uint32_t LocalMesh::findEdge(std::uint32_t a, std::uint32_t b) const {
+  if (triangleOf_[a] == kNone) return kNone;
+  ring(a, scratch_);
+  for (std::uint32_t c : scratch_) {
+    if (vertex_[nextCorner(c)] == b) return prevCorner(c);
+    if (vertex_[prevCorner(c)] == b) return nextCorner(c);
+  }
+  return kNone;
+}
+
+std::uint32_t LocalMesh::newTriangle() {
+  if (!free_.empty()) {
+    const std::uint32_t t = free_.back();
+    free_.pop_back();
+    alive_[t] = 1;
+    return t;
+  }
+  vertex_.resize(vertex_.size() + 3);
+  neighbour_.resize(neighbour_.size() + 3);
+  kind_.resize(kind_.size() + 3);
+  alive_.push_back(1);
+  return static_cast<std::uint32_t>(alive_.size() - 1);
+}
+
+void LocalMesh::setTriangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  vertex_[3 * t] = a, vertex_[3 * t + 1] = b, vertex_[3 * t + 2] = c;
+  triangleOf_[a] = triangleOf_[b] = triangleOf_[c] = t;
+}
+
+void LocalMesh::link(std::uint32_t c1, std::uint32_t c2, EdgeKind k) {
+  neighbour_[c1] = c2;
+  kind_[c1] = k;
+  if (c2 != kNone) neighbour_[c2] = c1, kind_[c2] = k;
+}
+
+// The edge (u, w) of corner e, with triangles (x, u, w) and (y, w, u), gets its midpoint m:
+// (x, u, m), (x, m, w), (y, w, m), (y, m, u).
+void LocalMesh::split(std::uint32_t e, std::uint32_t m) {
+  const std::uint32_t e2 = neighbour_[e];
+  const std::uint32_t x = vertex_[e], u = vertex_[nextCorner(e)], w = vertex_[prevCorner(e)];
+  const std::uint32_t y = vertex_[e2];
+  const std::uint32_t xu = neighbour_[prevCorner(e)], wx = neighbour_[nextCorner(e)];
+  const std::uint32_t yw = neighbour_[prevCorner(e2)], uy = neighbour_[nextCorner(e2)];
+  const EdgeKind kxu = kind_[prevCorner(e)], kwx = kind_[nextCorner(e)];
+  const EdgeKind kyw = kind_[prevCorner(e2)], kuy = kind_[nextCorner(e2)];
+  const std::uint32_t a = e / 3, c = e2 / 3, b = newTriangle(), d = newTriangle();
+  setTriangle(a, x, u, m);
+  setTriangle(b, x, m, w);
+  setTriangle(c, y, w, m);
+  setTriangle(d, y, m, u);
+  link(3 * a, 3 * d, EdgeKind::Free);
+  link(3 * a + 1, 3 * b + 2, EdgeKind::Free);
+  link(3 * a + 2, xu, kxu);
+  link(3 * b, 3 * c, EdgeKind::Free);
+  link(3 * b + 1, wx, kwx);
+  link(3 * c + 1, 3 * d + 2, EdgeKind::Free);
+  link(3 * c + 2, yw, kyw);
+  link(3 * d + 1, uy, kuy);
+}
+
+// (x, u, w) and (y, w, u) become (x, u, y) and (y, w, x).
+void LocalMesh::flip(std::uint32_t e) {
+  const std::uint32_t e2 = neighbour_[e];
+  const std::uint32_t x = vertex_[e], u = vertex_[nextCorner(e)], w = vertex_[prevCorner(e)];
+  const std::uint32_t y = vertex_[e2];
+  const std::uint32_t xu = neighbour_[prevCorner(e)], wx = neighbour_[nextCorner(e)];
+  const std::uint32_t yw = neighbour_[prevCorner(e2)], uy = neighbour_[nextCorner(e2)];
+  const EdgeKind kxu = kind_[prevCorner(e)], kwx = kind_[nextCorner(e)];
+  const EdgeKind kyw = kind_[prevCorner(e2)], kuy = kind_[nextCorner(e2)];
+  const std::uint32_t t1 = e / 3, t2 = e2 / 3;
+  setTriangle(t1, x, u, y);
+  setTriangle(t2, y, w, x);
+  link(3 * t1, uy, kuy);
+  link(3 * t1 + 1, 3 * t2 + 1, EdgeKind::Free);
+  link(3 * t1 + 2, xu, kxu);
+  link(3 * t2, wx, kwx);
+  link(3 * t2 + 2, yw, kyw);
+}
+
+void LocalMesh::collapse(std::uint32_t v, std::uint32_t w,
+                         const std::vector<std::uint32_t>& ringOfV) {
+  struct Seam {
+    std::uint32_t inner, outer;  // the corners across the two remaining edges of a removed triangle
+    EdgeKind kind;
+  };
+  Seam seams[2];
+  int removed = 0;
+  for (std::uint32_t c : ringOfV) {
+    // Triangle (v, b, a), counter-clockwise.
+    const std::uint32_t b = vertex_[nextCorner(c)], a = vertex_[prevCorner(c)];
+    if (b == w)
+      seams[removed++] = {neighbour_[nextCorner(c)], neighbour_[c], kind_[c]};
+    else if (a == w)
+      seams[removed++] = {neighbour_[prevCorner(c)], neighbour_[c], kind_[c]};
+    if (b == w || a == w) {
+      alive_[c / 3] = 0;
+      free_.push_back(c / 3);
+    }
+  }
+  for (std::uint32_t c : ringOfV)
+    if (alive_[c / 3]) {
+      vertex_[c] = w;
+      setTriangle(c / 3, vertex_[c - c % 3], vertex_[c - c % 3 + 1], vertex_[c - c % 3 + 2]);
+    }
+  for (int k = 0; k < removed; ++k) link(seams[k].inner, seams[k].outer, seams[k].kind);
+  triangleOf_[v] = kNone;
+}
+
+struct Edge {
+  double length;  // in target sizes
+  std::uint32_t a, b;
+};
+
+class MeshAdapter {
+ public:
+  MeshAdapter(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
+              const std::vector<double>& sizes, std::uint32_t firstMovable,
+              const SurfaceMetric* metric, const WorkPlaneSize* field)
+      : mesh_(boundary, inside), background_(boundary, inside, sizes), metric_(metric),
+        field_(field), firstMovable_(firstMovable), extended_(sizes),
+        target_(sizes.size()), hint_(sizes.size(), kNone), mark_(sizes.size(), 0) {
+    for (std::uint32_t t = 0; t < boundary.triangleCount(); ++t)
+      if (inside[t])
+        for (int i = 0; i < 3; ++i) hint_[boundary.vertex(3 * t + i)] = t;
+    for (std::uint32_t v = 0; v < sizes.size(); ++v)
+      target_[v] = mesh_.inMesh(v) ? cappedByField(sizes[v], mesh_.point(v)) : sizes[v];
+  }
+
+  PlanarMesh run(int smoothingPasses);
+
+ private:
+  double metricLength(Vec2 a, Vec2 b) const;
+  double length(std::uint32_t a, std::uint32_t b) const {
+    return metricLength(mesh_.point(a), mesh_.point(b)) / edgeSize(target_[a], target_[b]);
+  }
+  double quality(Vec2 a, Vec2 b, Vec2 c) const;
+  double quality(std::uint32_t t) const {
+    return quality(mesh_.point(mesh_.vertex(3 * t)), mesh_.point(mesh_.vertex(3 * t + 1)),
+                   mesh_.point(mesh_.vertex(3 * t + 2)));
+  }
+  void updateSize(std::uint32_t v);
+  double cappedByField(double size, Vec2 x) const;
+  std::vector<Edge> edgesOutside(bool longOnes) const;
+  std::size_t splitLongEdges();
+  bool split(std::uint32_t corner);
+  std::size_t collapseShortEdges();
+  bool tryCollapse(std::uint32_t v, std::uint32_t w);
+  void swapEdges();
+  bool swapImproves(std::uint32_t corner) const;
+  void smoothVertices();
+  bool smoothVertex(std::uint32_t v);
+  double worstAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
+  bool allPositiveAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
+  PlanarMesh result() const;
+
+  LocalMesh mesh_;
+  BoundarySizes background_;
+  const SurfaceMetric* metric_;
+  const WorkPlaneSize* field_;
+  std::uint32_t firstMovable_;
+  std::vector<double> extended_;     // per vertex: size extended from the boundary
+  std::vector<double> target_;       // per vertex: the size asked for (field included)
+  std::vector<std::uint32_t> hint_;  // per vertex: where its size was found in background_
+  std::vector<std::uint32_t> mark_;  // per vertex: stamps of the link test
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> ring_, otherRing_;
+};
+
+double MeshAdapter::metricLength(Vec2 a, Vec2 b) const {
+  const double du = b.u - a.u, dv = b.v - a.v;
+  if (!metric_) return std::sqrt(du * du + dv * dv);
+  const Metric2 m = metric_->at(midpoint(a, b));
+  return std::sqrt(std::max(m.a * du * du + 2 * m.b * du * dv + m.c * dv * dv, 0.0));
+}
+
+double MeshAdapter::quality(Vec2 a, Vec2 b, Vec2 c) const {
+  if (!metric_) return gamma(a, b, c);
+  const MetricFrame f(metric_->at({(a.u + b.u + c.u) / 3, (a.v + b.v + c.v) / 3}));
+  return gamma(f.apply(a), f.apply(b), f.apply(c));
+}
+
+void MeshAdapter::updateSize(std::uint32_t v) {
+  const Vec2 x = mesh_.point(v);
+  extended_[v] = background_.at(x, hint_[v]);
+  target_[v] = cappedByField(extended_[v], x);
+}
+
+// A field's size where it asks for one (a size that is not positive asks for nothing).
+double MeshAdapter::cappedByField(double size, Vec2 x) const {
+  if (!field_) return size;
+  const double f = (*field_)(x);
+  return f > 0 ? std::min(size, f) : size;
+}
+
+// Free edges longer than the split length (longOnes) or shorter than the collapse length,
+// longest (shortest) first.
+std::vector<Edge> MeshAdapter::edgesOutside(bool longOnes) const {
+  std::vector<Edge> edges;
+  for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t) {
+    if (!mesh_.alive(t)) continue;
+    for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
+      const std::uint32_t across = mesh_.neighbour(c);
+      if (across == kNone || across < c || mesh_.kind(c) != EdgeKind::Free) continue;
+      const std::uint32_t a = mesh_.vertex(nextCorner(c)), b = mesh_.vertex(prevCorner(c));
+      const double l = length(a, b);
+      if (longOnes ? l > kSplitAbove : l < kCollapseBelow) edges.push_back({l, a, b});
+    }
+  }
+  const auto key = [](const Edge& e) { return std::tuple(e.length, e.a, e.b); };
+  std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) {
+    return longOnes ? key(y) < key(x) : key(x) < key(y);
+  });
+  return edges;
+}
+
+std::size_t MeshAdapter::splitLongEdges() {
+  std::size_t count = 0;
+  for (const Edge& e : edgesOutside(true)) {
+    const std::uint32_t c = mesh_.findEdge(e.a, e.b);
+    if (c != kNone && mesh_.kind(c) == EdgeKind::Free && split(c)) ++count;
+  }
+  return count;
+}
+
+bool MeshAdapter::split(std::uint32_t c) {
+  const std::uint32_t x = mesh_.vertex(c), u = mesh_.vertex(nextCorner(c)),
+                      w = mesh_.vertex(prevCorner(c)), y = mesh_.vertex(mesh_.neighbour(c));
+  const Vec2 m = midpoint(mesh_.point(u), mesh_.point(w));
+  const Vec2 px = mesh_.point(x), pu = mesh_.point(u), pw = mesh_.point(w), py = mesh_.point(y);
+  // Rounding may put the midpoint off the edge: every new triangle must stay positive.
+  if (orient2d(px, pu, m) <= 0 || orient2d(px, m, pw) <= 0 || orient2d(py, pw, m) <= 0 ||
+      orient2d(py, m, pu) <= 0)
+    return false;
+  const std::uint32_t v = mesh_.addPoint(m);
+  extended_.push_back(0);
+  target_.push_back(0);
+  hint_.push_back(hint_[u]);
+  mark_.push_back(0);
+  updateSize(v);
+  mesh_.split(c, v);
+  return true;
+}
+
+std::size_t MeshAdapter::collapseShortEdges() {
+  std::size_t count = 0;
+  for (const Edge& e : edgesOutside(false)) {
+    if (!mesh_.inMesh(e.a) || !mesh_.inMesh(e.b) || mesh_.findEdge(e.a, e.b) == kNone) continue;
+    if (tryCollapse(e.a, e.b) || tryCollapse(e.b, e.a)) ++count;
+  }
+  return count;
+}
+
+// Merges v into w if v may move, the result is a valid triangulation (the link condition:
+// v and w have exactly two common neighbours; every triangle stays positive) and it makes
+// no long edge nor a bad triangle.
+bool MeshAdapter::tryCollapse(std::uint32_t v, std::uint32_t w) {
+  if (v < firstMovable_ || !mesh_.ring(v, ring_)) return false;
+  ++stamp_;
+  for (std::uint32_t c : ring_) mark_[mesh_.vertex(nextCorner(c))] = stamp_;
+  const bool wClosed = mesh_.ring(w, otherRing_);
+  int common = 0;
+  for (std::uint32_t c : otherRing_) common += mark_[mesh_.vertex(nextCorner(c))] == stamp_;
+  if (!wClosed) common += mark_[mesh_.vertex(prevCorner(otherRing_.back()))] == stamp_;
+  if (common != 2) return false;
+  const Vec2 pw = mesh_.point(w);
+  double oldWorst = 1, newWorst = 1;
+  for (std::uint32_t c : ring_) {
+    oldWorst = std::min(oldWorst, quality(c / 3));
+    const std::uint32_t b = mesh_.vertex(nextCorner(c)), a = mesh_.vertex(prevCorner(c));
+    if (a == w || b == w) continue;
+    const Vec2 pb = mesh_.point(b), pa = mesh_.point(a);
+    if (orient2d(pw, pb, pa) <= 0 || length(w, b) > kSplitAbove) return false;
+    newWorst = std::min(newWorst, quality(pw, pb, pa));
+  }
+  if (newWorst < std::min(oldWorst, kCollapseQuality)) return false;
+  mesh_.collapse(v, w, ring_);
+  return true;
+}
+
+// Lawson-style swaps for quality: an edge is swapped when the worse of its two triangles
+// gets better. Each swap raises the sorted list of qualities, so the loop ends.
+void MeshAdapter::swapEdges() {
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t)
+    if (mesh_.alive(t))
+      for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c)
+        if (mesh_.neighbour(c) != kNone && mesh_.neighbour(c) > c) stack.push_back(c);
+  std::reverse(stack.begin(), stack.end());
+  while (!stack.empty()) {
+    const std::uint32_t c = stack.back();
+    stack.pop_back();
+    if (!swapImproves(c)) continue;
+    const std::uint32_t t1 = c / 3, t2 = mesh_.neighbour(c) / 3;
+    mesh_.flip(c);
+    stack.insert(stack.end(), {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2});
+  }
+}
+
+bool MeshAdapter::swapImproves(std::uint32_t c) const {
+  const std::uint32_t across = mesh_.neighbour(c);
+  if (across == kNone || mesh_.kind(c) != EdgeKind::Free) return false;
+  const Vec2 x = mesh_.point(mesh_.vertex(c)), u = mesh_.point(mesh_.vertex(nextCorner(c))),
+             w = mesh_.point(mesh_.vertex(prevCorner(c))), y = mesh_.point(mesh_.vertex(across));
+  const double before = std::min(quality(x, u, w), quality(y, w, u));
+  const double after = std::min(quality(x, u, y), quality(y, w, x));
+  // The exact test last: it only confirms what the qualities, 0 if not positive, suggest.
+  return after > before * (1 + 1e-3) && orient2d(x, u, y) > 0 && orient2d(y, w, x) > 0;
+}
+
+void MeshAdapter::smoothVertices() {
+  for (std::uint32_t v = firstMovable_; v < mesh_.pointCount(); ++v)
+    if (mesh_.inMesh(v)) smoothVertex(v);
+}
+
+// Moves v towards the centroid of its neighbours, as far as keeps every triangle around it
+// positive and the worst of them no worse.
+bool MeshAdapter::smoothVertex(std::uint32_t v) {
+  if (!mesh_.ring(v, ring_)) return false;
+  double su = 0, sv = 0, worst = 1;
+  for (std::uint32_t c : ring_) {
+    const Vec2 p = mesh_.point(mesh_.vertex(nextCorner(c)));
+    su += p.u, sv += p.v;
+    worst = std::min(worst, quality(c / 3));
+  }
+  const Vec2 old = mesh_.point(v);
+  const Vec2 centroid{su / ring_.size(), sv / ring_.size()};
+  for (double step : {1.0, 0.5, 0.25}) {
+    const Vec2 p{old.u + step * (centroid.u - old.u), old.v + step * (centroid.v - old.v)};
+    if (worstAround(p, ring_) >= worst && allPositiveAround(p, ring_)) {
+      mesh_.movePoint(v, p);
+      updateSize(v);
+      return true;
+    }
+  }
+  return false;
+}
+
+// The worst quality of the triangles of `ring` with their common vertex at p.
+double MeshAdapter::worstAround(Vec2 p, const std::vector<std::uint32_t>& ring) const {
+  double worst = 1;
+  for (std::uint32_t c : ring)
+    worst = std::min(worst, quality(p, mesh_.point(mesh_.vertex(nextCorner(c))),
+                                    mesh_.point(mesh_.vertex(prevCorner(c)))));
+  return worst;
+}
+
+bool MeshAdapter::allPositiveAround(Vec2 p, const std::vector<std::uint32_t>& ring) const {
+  for (std::uint32_t c : ring)
+    if (orient2d(p, mesh_.point(mesh_.vertex(nextCorner(c))),
+                 mesh_.point(mesh_.vertex(prevCorner(c)))) <= 0)
+      return false;
+  return true;
+}
+
+PlanarMesh MeshAdapter::run(int smoothingPasses) {
+  // While edges more than twice too long remain, the mesh is still being refined and the
+  // number of edges out of range grows; only then does it have to come down.
+  std::size_t fewest = static_cast<std::size_t>(-1);
+  for (int pass = 0, stalled = 0; pass < kMaxPasses; ++pass) {
+    splitLongEdges();
+    collapseShortEdges();
+    swapEdges();
+    smoothVertices();
+    swapEdges();
+    const std::vector<Edge> tooLong = edgesOutside(true);
+    const std::size_t outOfRange = tooLong.size() + edgesOutside(false).size();
+    if (outOfRange == 0) break;
+    if (!tooLong.empty() && tooLong.front().length > 2 * kSplitAbove) continue;
+    if (outOfRange < fewest)
+      fewest = outOfRange, stalled = 0;
+    else if (++stalled == kPassesWithoutProgress)
+      break;
+  }
+  for (int pass = 0; pass < smoothingPasses; ++pass) {
+    smoothVertices();
+    swapEdges();
+  }
+  return result();
+}
+
+PlanarMesh MeshAdapter::result() const {
+  PlanarMesh out;
+  out.points.reserve(mesh_.pointCount());
+  for (std::uint32_t v = 0; v < mesh_.pointCount(); ++v) out.points.push_back(mesh_.point(v));
+  out.sizes = extended_;
+  for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t)
+    if (mesh_.alive(t))
+      for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) out.triangles.push_back(mesh_.vertex(c));
+  return out;
+}
+
+}  // namespace
+
+PlanarMesh adaptMesh(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
+                     const std::vector<double>& sizes, std::uint32_t firstMovable,
+                     int smoothingPasses, const SurfaceMetric* metric,
+                     const WorkPlaneSize* field) {
+  return MeshAdapter(boundary, inside, sizes, firstMovable, metric, field).run(smoothingPasses);
+}
+
+}  // namespace geomesh
