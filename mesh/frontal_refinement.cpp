@@ -1,10 +1,13 @@
 #include "mesh/frontal_refinement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 #include <tuple>
 #include <utility>
+
+#include "mesh/predicates.h"
 
 namespace geomesh {
 namespace {
@@ -15,11 +18,14 @@ constexpr double kAcceptRatio = 1.2;
 // A new point closer than this fraction of the target size to a vertex is not inserted.
 constexpr double kMinSpacing = 0.5;
 constexpr double kSqrt3 = 1.7320508075688772;
+constexpr double kSqrt2 = 1.4142135623730951;
+constexpr double kPi = 3.14159265358979323846;
 
 enum class State : std::uint8_t { Outside, Waiting, Active, Accepted };
-// Where new points go: in front of the front (frontal-Delaunay), or at the circumcentre of
-// the worst triangle (Delaunay refinement), wherever it is.
-enum class Placement : std::uint8_t { Frontal, Circumcenter };
+// Where new points go: in front of the front (frontal-Delaunay), at the circumcentre of the
+// worst triangle (Delaunay refinement), wherever it is, or in front of the front at the
+// corner of a square cell aligned with a cross field (frontal-Delaunay for quadrangles).
+enum class Placement : std::uint8_t { Frontal, Circumcenter, FrontalQuads };
 
 struct HeapEntry {
   float ratio;
@@ -51,13 +57,15 @@ class FrontalRefiner {
                  std::vector<double>& sizes, const SurfaceMetric* metric,
                  const WorkPlaneSize* field, Placement placement)
       : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric), field_(field),
-        placement_(placement) {}
+        placement_(placement),
+        idealRadius_(placement == Placement::FrontalQuads ? 1 / kSqrt2 : 1 / kSqrt3) {}
 
   void run() {
     const std::uint32_t firstNew = static_cast<std::uint32_t>(sizes_.size());
     const std::uint32_t n = static_cast<std::uint32_t>(tri_.triangleCount());
     state_.assign(n, State::Outside);
     stamp_.assign(n, 0);
+    if (placement_ == Placement::FrontalQuads) initCrossField();
     for (std::uint32_t t = 0; t < n; ++t)
       if (inside_[t]) state_[t] = isGood(t) ? State::Accepted : State::Waiting;
     for (std::uint32_t t = 0; t < n; ++t) activateIfOnFront(t);
@@ -98,7 +106,7 @@ class FrontalRefiner {
     }
     const double area2 = std::abs((b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u));
     const double radius = length(sub(b, a)) * length(sub(c, b)) * length(sub(a, c)) / (2 * area2);
-    return radius * kSqrt3 / targetSize(t);
+    return radius / (idealRadius_ * targetSize(t));
   }
   bool isGood(std::uint32_t t) const { return ratio(t) < kAcceptRatio; }
 
@@ -156,15 +164,88 @@ class FrontalRefiner {
     return f.invert({mid.u + d * inward.u, mid.v + d * inward.v});
   }
 
-  // Size at x interpolated linearly in triangle t.
-  double interpolatedSize(std::uint32_t t, Vec2 x) const {
+  // The barycentric coordinates of x in triangle t.
+  std::array<double, 3> weights(std::uint32_t t, Vec2 x) const {
     const Vec2 a = p(t, 0), b = p(t, 1), c = p(t, 2);
     const double det = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
     const double l1 = ((x.u - a.u) * (c.v - a.v) - (x.v - a.v) * (c.u - a.u)) / det;
     const double l2 = ((b.u - a.u) * (x.v - a.v) - (b.v - a.v) * (x.u - a.u)) / det;
-    const double l0 = 1 - l1 - l2;
-    return l0 * sizes_[tri_.vertex(3 * t)] + l1 * sizes_[tri_.vertex(3 * t + 1)] +
-           l2 * sizes_[tri_.vertex(3 * t + 2)];
+    return {1 - l1 - l2, l1, l2};
+  }
+  // Size at x interpolated linearly in triangle t.
+  double interpolatedSize(std::uint32_t t, Vec2 x) const {
+    const std::array<double, 3> w = weights(t, x);
+    return w[0] * sizes_[tri_.vertex(3 * t)] + w[1] * sizes_[tri_.vertex(3 * t + 1)] +
+           w[2] * sizes_[tri_.vertex(3 * t + 2)];
+  }
+
+  // The cross field of quadrangle meshing: at each vertex, (cos 4a, sin 4a) for the angle a
+  // of the square cells wanted there, summed over the constrained edges at boundary
+  // vertices (a cross is the same turned by a quarter turn) and interpolated inside.
+  void initCrossField() {
+    cross_.assign(sizes_.size(), {0, 0});
+    for (std::uint32_t t = 0; t < tri_.triangleCount(); ++t) {
+      if (!inside_[t]) continue;
+      for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
+        if (tri_.kind(c) == EdgeKind::Free) continue;
+        const std::uint32_t va = tri_.vertex(3 * t + (c + 1) % 3);
+        const std::uint32_t vb = tri_.vertex(3 * t + (c + 2) % 3);
+        const Vec2 pa = tri_.point(va), pb = tri_.point(vb);
+        const Vec2 d = frameAt({0.5 * (pa.u + pb.u), 0.5 * (pa.v + pb.v)}).apply(sub(pb, pa));
+        const double angle = 4 * std::atan2(d.v, d.u);
+        for (std::uint32_t v : {va, vb})
+          cross_[v] = {cross_[v].u + std::cos(angle), cross_[v].v + std::sin(angle)};
+      }
+    }
+  }
+  Vec2 interpolatedCross(std::uint32_t t, Vec2 x) const {
+    const std::array<double, 3> w = weights(t, x);
+    Vec2 sum{0, 0};
+    for (int i = 0; i < 3; ++i) {
+      const Vec2 c = cross_[tri_.vertex(3 * t + i)];
+      sum = {sum.u + w[i] * c.u, sum.v + w[i] * c.v};
+    }
+    return sum;
+  }
+
+  // Where to put the new point in front of the edge of `corner` for square cells: at a
+  // target size from one end of the edge along the cross direction closest to the edge's
+  // inward normal, the candidate whose distances to both ends, in the cross's max-norm, are
+  // nearest the target size (an axis edge gets a right angle at its end, a diagonal one its
+  // opposite corner). Rebay's point when that one would not replace t.
+  Vec2 quadPoint(std::uint32_t t, std::uint32_t corner) const {
+    const std::uint32_t va = tri_.vertex(3 * t + (corner + 1) % 3);
+    const std::uint32_t vb = tri_.vertex(3 * t + (corner + 2) % 3);
+    const Vec2 middle{0.5 * (tri_.point(va).u + tri_.point(vb).u),
+                      0.5 * (tri_.point(va).v + tri_.point(vb).v)};
+    const MetricFrame f = frameAt(middle);
+    const Vec2 a = f.apply(tri_.point(va)), b = f.apply(tri_.point(vb));
+    const Vec2 ab = sub(b, a);
+    const Vec2 inward{-ab.v / length(ab), ab.u / length(ab)};
+    const Vec2 cross{cross_[va].u + cross_[vb].u, cross_[va].v + cross_[vb].v};
+    const double angle = cross.u == 0 && cross.v == 0 ? std::atan2(ab.v, ab.u)
+                                                      : std::atan2(cross.v, cross.u) / 4;
+    double target = 0.5 * (sizes_[va] + sizes_[vb]);
+    if (field_) target = std::min(target, (*field_)(middle));
+    const auto maxNorm = [angle](Vec2 d) {
+      const double c = std::cos(angle), s = std::sin(angle);
+      return std::max(std::abs(c * d.u + s * d.v), std::abs(-s * d.u + c * d.v));
+    };
+    Vec2 best{};
+    double bestScore = 1e300;
+    for (const Vec2 base : {a, b})
+      for (int k = 0; k < 4; ++k) {
+        const Vec2 d{std::cos(angle + k * kPi / 2), std::sin(angle + k * kPi / 2)};
+        if (d.u * inward.u + d.v * inward.v < 0.5) continue;
+        const Vec2 x{base.u + target * d.u, base.v + target * d.v};
+        const double score =
+            std::abs(maxNorm(sub(x, a)) - target) + std::abs(maxNorm(sub(x, b)) - target);
+        if (score < bestScore) best = x, bestScore = score;
+      }
+    const Vec2 x = f.invert(best);
+    if (bestScore == 1e300 || incircle(p(t, 0), p(t, 1), p(t, 2), x) <= 0)
+      return frontPoint(t, corner);
+    return x;
   }
 
   // The cavity of new vertex v at x: in the surface's metric at x when there is one (falling
@@ -212,7 +293,7 @@ class FrontalRefiner {
     } else {
       const std::uint32_t corner = frontCorner(t);
       if (corner == kNone) return false;
-      x = frontPoint(t, corner);
+      x = placement_ == Placement::FrontalQuads ? quadPoint(t, corner) : frontPoint(t, corner);
       found = tri_.locate(x, t);
     }
     if (found == kNone || !inside_[found]) return false;
@@ -227,6 +308,7 @@ class FrontalRefiner {
       return false;
     }
     sizes_.push_back(extended);
+    if (placement_ == Placement::FrontalQuads) cross_.push_back(interpolatedCross(found, x));
     tri_.commitCavity(v);
     updateAfterInsertion();
     return true;
@@ -254,6 +336,8 @@ class FrontalRefiner {
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
   Placement placement_;
+  double idealRadius_;  // circumradius of the ideal triangle of unit size
+  std::vector<Vec2> cross_;
   std::vector<State> state_;
   std::vector<std::uint32_t> stamp_;
   std::vector<HeapEntry> heap_;
@@ -265,6 +349,12 @@ void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                    std::vector<double>& sizes, const SurfaceMetric* metric,
                    const WorkPlaneSize* field) {
   FrontalRefiner(tri, inside, sizes, metric, field, Placement::Frontal).run();
+}
+
+void refineFrontalQuads(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
+                        std::vector<double>& sizes, const SurfaceMetric* metric,
+                        const WorkPlaneSize* field) {
+  FrontalRefiner(tri, inside, sizes, metric, field, Placement::FrontalQuads).run();
 }
 
 void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,

@@ -28,6 +28,14 @@ void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                    std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
                    const WorkPlaneSize* field = nullptr);
 
+// Frontal-Delaunay for quadrangles (Mesh.Algorithm 8): the same front, but the ideal
+// triangle is the right isosceles one with legs of the target size, placed along a cross
+// field taken from the directions of the constrained edges, so that pairs of triangles
+// make square cells for recombination.
+void refineFrontalQuads(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
+                        std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
+                        const WorkPlaneSize* field = nullptr);
+
 // Delaunay refinement (Mesh.Algorithm 5): the same acceptance test, but every bad triangle
 // is refined, worst first, by inserting its circumcentre (in the surface's metric), or its
 // centroid when the circumcentre lies outside the domain.

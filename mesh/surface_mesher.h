@@ -25,8 +25,9 @@ inline constexpr int kQuasiStructuredQuads = 11;
 // Meshes one surface whose boundary (and embedded) curves and points are meshed already,
 // starting from the constrained Delaunay triangulation of the boundary nodes in the
 // parameter plane. `algorithm2D` says what follows: MeshAdapt (1, local modifications, see
-// adaptMesh), nothing (3, the boundary triangulation only), Delaunay (5) or frontal-Delaunay
-// (6, any other value) refinement to the target size followed by `smoothingPasses` passes of
+// adaptMesh), nothing (3, the boundary triangulation only), frontal-Delaunay for quadrangles
+// (8, square cells split in two, not smoothed), or Delaunay (5) or frontal-Delaunay (6, any
+// other value) refinement to the target size followed by `smoothingPasses` passes of
 // smoothing. Target sizes are extended from the boundary nodes' sizes in nodeSizes; with a
 // background size field, the interior's target size is the smaller of the extended one and
 // the field's. Curved surfaces are meshed in their own metric (first fundamental form),

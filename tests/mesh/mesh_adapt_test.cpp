@@ -286,6 +286,73 @@ TEST(MeshAdapt, BackgroundFieldIsHonoured) {
   EXPECT_GE(fractionNearSize(mesh, 1, uniform(0.05)), 0.97);
 }
 
+// The square of side 1 turned by `degrees` around the origin, at size 0.1.
+Model turnedSquare(double degrees) {
+  const double a = degrees * testing::CircleGeometry::kPi / 180, c = std::cos(a), s = std::sin(a);
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {c, s}, {c - s, s + c}, {-s, c}}, 0.1)});
+  return std::move(b.model);
+}
+
+TEST(FrontalQuads, SquareCellsFollowTheBoundary) {
+  // Right isosceles triangles of legs 0.1 on the 11 x 11 lattice, whatever the square's
+  // direction: gamma is 2 (sqrt 2 - 1) for each.
+  for (double degrees : {0.0, 30.0}) {
+    const Model model = turnedSquare(degrees);
+    MeshOptions options;
+    options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+    Mesh mesh;
+    SilentSink log;
+    generateMesh(model, options, 2, mesh, log);
+    ASSERT_TRUE(checkMesh(model, mesh).ok());
+    EXPECT_EQ(mesh.nodeCount(), 121u) << degrees;
+    EXPECT_EQ(mesh.elementCount(2), 200u) << degrees;
+    const QualityStats gamma = meshQuality(mesh, 2, QualityMeasure::Gamma);
+    EXPECT_NEAR(gamma.min, 2 * (std::sqrt(2.0) - 1), 1e-6) << degrees;
+    EXPECT_NEAR(gamma.mean, 2 * (std::sqrt(2.0) - 1), 1e-6) << degrees;
+  }
+}
+
+TEST(FrontalQuads, RecombinedOnlyWhenAsked) {
+  Model model = turnedSquare(0);
+  model.meshConstraints().recombinedSurfaces[1] = 45;
+  MeshOptions options;
+  options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(model, options, 2, mesh, log);
+  ASSERT_TRUE(checkMesh(model, mesh).ok());
+  const EntityMesh& em = *mesh.find({2, 1});
+  EXPECT_EQ(em.findBlock(ElementType::Triangle3), nullptr);
+  ASSERT_NE(em.findBlock(ElementType::Quad4), nullptr);
+  EXPECT_EQ(em.findBlock(ElementType::Quad4)->size(), 100u);
+}
+
+TEST(FrontalQuads, CurvedBoundaryAndHole) {
+  PolygonModelBuilder b;
+  const std::vector<int> disc = b.circle({0, 0}, 1, 0.05);
+  const std::vector<int> hole = b.polygon({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 0.05);
+  b.surface({disc, hole});
+  MeshOptions options;
+  options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, options, 2, mesh, log);
+  ASSERT_TRUE(checkMesh(b.model, mesh).ok());
+  expectBoundaryIsTheCurveMeshes(b.model, mesh, 1);
+  double discPolygon = 0;
+  const std::vector<NodeIndex> chain = curveNodeChain(b.model, mesh, disc[0]);
+  for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+    const Vec3 p = mesh.node(chain[k]), q = mesh.node(chain[k + 1]);
+    discPolygon += 0.5 * (p.x * q.y - p.y * q.x);
+  }
+  EXPECT_NEAR(testing::meshArea(mesh, 1), discPolygon - 0.24, 1e-9);
+  EXPECT_GE(fractionNearSize(mesh, 1, uniform(0.05)), 0.97);
+  const QualityStats gamma = meshQuality(mesh, 2, QualityMeasure::Gamma);
+  EXPECT_GT(gamma.min, 0.3);
+  EXPECT_GT(gamma.mean, 0.8);
+}
+
 TEST(MeshAdapt, InitialMeshOnlyAddsNoNode) {
   PolygonModelBuilder b;
   b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
