@@ -41,6 +41,10 @@ enum class ExprKind {
   Shape,         // words{...}{...}: Point{1}, Boundary{ Surface{1}; }, Extrude{..}{..}
   DefineNumber,  // DefineNumber[args[0], attributes]
   DefineString,  // DefineString[args[0], attributes]
+  StructDef,     // Struct words[0]::name (text "Append" or empty) [attributes]; its tag
+  Member,        // words[0]::name.text: a Struct member (text empty: the Struct's tag)
+  MemberItem,    // words[0]::name.text(args[0]): one item of a list member
+  MemberList,    // words[0]::name.text(): a whole list member
 };
 
 // One brace group after a shape's words: either expressions `{1, 2:4}` or a block of
@@ -50,7 +54,8 @@ struct ShapePart {
   ExprList items;
 };
 
-// `Name "x"`, `Min 0`, `Choices{0, 1}` in DefineConstant / DefineNumber.
+// `Name "x"`, `Min 0`, `Choices{0, 1}` in DefineConstant / DefineNumber; also the members
+// of a Struct (`epsr 5`, `Enum`: values empty when none is given).
 struct Attribute {
   std::string name;
   SourceLocation loc;
@@ -65,9 +70,9 @@ struct Expr {
   std::string text;
   Name name;
   ExprList args;
-  std::vector<std::string> words;   // Shape
+  std::vector<std::string> words;   // Shape; the namespace of a Struct ("" for the global one)
   std::vector<ShapePart> parts;     // Shape
-  std::vector<Attribute> attributes;  // DefineNumber / DefineString
+  std::vector<Attribute> attributes;  // DefineNumber / DefineString / StructDef
 };
 
 // Where an assignment stores its value.

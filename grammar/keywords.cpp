@@ -1,5 +1,7 @@
 #include "grammar/keywords.h"
 
+#include <algorithm>
+
 namespace geomesh {
 
 namespace {
@@ -36,7 +38,26 @@ constexpr std::string_view kAttributeNames[] = {
     "ReadOnly", "ReadOnlyRange", "ServerAction", "Step", "Units", "Visible",
 };
 
+// Built-in functions: Gmsh reserves their names, so Name[args] calls them as Name(args) does.
+constexpr std::string_view kFunctionNames[] = {
+    "AbsolutePath", "Abs", "Acos", "Acosh", "ArcCos", "ArcSin", "ArcTan", "ArcTan2", "Asin",
+    "Asinh", "Atan", "Atan2", "Atanh", "Ceil", "Cos", "Cosh", "DimNameSpace", "DirName", "Exists",
+    "Exp", "Fabs", "FileExists", "Find", "Floor", "Fmod", "GetEnv", "GetForced", "GetNumber",
+    "GetString", "GetValue", "Hypot", "LinSpace", "ListFromFile", "Log", "Log10", "LogSpace",
+    "LowerCase", "Max", "Min", "Modulo", "NameStruct", "NameToString", "Rand", "Round", "S2N",
+    "Sin", "Sign", "Sinh",  // Sin first: the likelier meaning of a misspelled "Sinn"
+    "Sprintf", "Sqrt", "Step", "Str", "StrCat", "StrChoice", "StrCmp", "StrFind", "StrLen",
+    "StrPrefix", "StrRelative", "StrReplace", "StrSub", "Tan", "Tanh", "Unique", "UpperCase",
+};
+
 }  // namespace
+
+std::span<const std::string_view> functionNames() { return kFunctionNames; }
+
+bool isFunctionName(std::string_view name) {
+  return std::find(std::begin(kFunctionNames), std::end(kFunctionNames), name) !=
+         std::end(kFunctionNames);
+}
 
 std::span<const std::string_view> commandWords() { return kCommandWords; }
 std::span<const std::string_view> tailWords() { return kTailWords; }

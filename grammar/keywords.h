@@ -11,5 +11,8 @@ std::span<const std::string_view> commandWords();
 std::span<const std::string_view> tailWords();
 // Attribute names inside DefineConstant[...] (Name, Min, Max, Choices, ...).
 std::span<const std::string_view> attributeNames();
+// Names of the built-in functions (Sqrt, StrCat, Sprintf, ...).
+std::span<const std::string_view> functionNames();
+bool isFunctionName(std::string_view name);
 
 }  // namespace geomesh

@@ -96,6 +96,7 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
   if (text == "Return") return closing(Parser::make_RETURN(where));
   if (text == "Call") return Parser::make_CALL(where);
   if (text == "Plugin") return Parser::make_PLUGIN(where);
+  if (text == "Struct") return Parser::make_STRUCT(where);
   if (text == "DefineConstant" || text == "DefineNumber" || text == "DefineString") {
     defineAhead_ = true;
     if (text == "DefineConstant") return Parser::make_DEFINECONSTANT(where);
@@ -217,6 +218,7 @@ Parser::symbol_type Lexer::scan() {
       "*=" { return Parser::make_TIMESEQ(tokenLocation()); }
       "/=" { return Parser::make_DIVEQ(tokenLocation()); }
       ">>" { return Parser::make_APPEND(tokenLocation()); }
+      "::" { return Parser::make_SCOPE(tokenLocation()); }
       [-+*/%^()[\]{},;=<>!?:.#~] {
         return punctuation(static_cast<unsigned char>(*token_), tokenLocation());
       }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "grammar/keywords.h"
 #include "grammar/tokenizer.h"
 
 namespace geomesh::grammar {
@@ -58,6 +59,40 @@ ExprPtr listOrSingle(ExprList items, const Parser::location_type& where) {
   auto list = makeExpr(ExprKind::List, where);
   list->args = std::move(items);
   return list;
+}
+
+ExprPtr elementOrCall(Name name, ExprPtr index, const Parser::location_type& where) {
+  const bool call = name.suffixes.empty() && isFunctionName(name.base);
+  auto expr = makeExpr(call ? ExprKind::Call : ExprKind::Element, where);
+  if (call)
+    expr->text = std::move(name.base);
+  else
+    expr->name = std::move(name);
+  expr->args.push_back(std::move(index));
+  return expr;
+}
+
+ExprPtr structByString(Name function, std::string space, ExprPtr text,
+                       const Parser::location_type& where) {
+  if (function.base != "S2N" || !function.suffixes.empty())
+    throw SyntaxError(at(where), "expected S2N[...] before '.' to name a Struct by a string");
+  auto ref = makeExpr(ExprKind::Member, where);
+  ref->words.push_back(std::move(space));
+  ref->name.suffixes.push_back(std::move(text));
+  return ref;
+}
+
+ExprPtr indexInNamespace(Name function, std::string space, ExprPtr index,
+                         const Parser::location_type& where) {
+  if (!function.suffixes.empty() || function.base != "NameStruct")
+    throw SyntaxError(at(where), "'" + function.base + "' takes no namespace index (NS::#i)");
+  auto count = makeExpr(ExprKind::Count, where);
+  count->words.push_back(std::move(space));
+  count->args.push_back(std::move(index));
+  auto call = makeExpr(ExprKind::Call, where);
+  call->text = std::move(function.base);
+  call->args.push_back(std::move(count));
+  return call;
 }
 
 StmtPtr shapeCommand(ExprPtr shape, const Parser::location_type& where) {

@@ -27,6 +27,17 @@ ast::StmtPtr makeStmt(Node node, const Parser::location_type& where) {
   return stmt;
 }
 
+// name[index]: an item of a list, or a call when `name` is a built-in function (Str[...]).
+ast::ExprPtr elementOrCall(ast::Name name, ast::ExprPtr index, const Parser::location_type& where);
+
+// S2N[text] / NS::S2N[text]: the Struct whose name `text` evaluates to (`function` must be S2N).
+ast::ExprPtr structByString(ast::Name function, std::string space, ast::ExprPtr text,
+                            const Parser::location_type& where);
+// NameStruct[NS::#i]: a call whose one argument counts in the namespace (a Count node naming
+// it in its words).
+ast::ExprPtr indexInNamespace(ast::Name function, std::string space, ast::ExprPtr index,
+                              const Parser::location_type& where);
+
 ast::StmtPtr shapeCommand(ast::ExprPtr shape, const Parser::location_type& where);
 ast::StmtPtr forStmt(ast::Name variable, ast::ExprPtr range, ast::StmtList body,
                      const Parser::location_type& where);

@@ -39,6 +39,7 @@ using geomesh::grammar::unary;
 %token <std::string> TAILWORD "modifier" ATTR "attribute"
 %token FOR "For" ENDFOR "EndFor" IN "In" IF "If" ELSEIF "ElseIf" ELSE "Else" ENDIF "EndIf"
 %token MACRO "Macro" RETURN "Return" CALL "Call" PLUGIN "Plugin" USINGWIRE "Using Wire"
+%token STRUCT "Struct" SCOPE "::"
 %token DEFINECONSTANT "DefineConstant" DEFINENUMBER "DefineNumber" DEFINESTRING "DefineString"
 %token EQ "==" NE "!=" LE "<=" GE ">=" AND "&&" OR "||" INCR "++" DECR "--"
 %token PLUSEQ "+=" MINUSEQ "-=" TIMESEQ "*=" DIVEQ "/=" APPEND ">>"
@@ -50,7 +51,11 @@ using geomesh::grammar::unary;
 %nterm <ast::LValue> lvalue
 %nterm <std::string> assign_op compound_op
 %nterm <std::vector<std::string>> words
-%nterm <ast::ExprPtr> expr primary shape bare item option_path
+%nterm <ast::ExprPtr> expr primary shape bare item option_path struct_def struct_name struct_ref
+%nterm <ast::ExprPtr> member_ref
+%nterm <std::string> struct_append member_name
+%nterm <std::vector<ast::Attribute>> struct_members
+%nterm <ast::Attribute> struct_member
 %nterm <ast::ExprList> args args_opt items
 %nterm <std::vector<ast::ShapePart>> parts
 %nterm <ast::ShapePart> part block block_part
@@ -95,7 +100,53 @@ stmt:
                                    std::move($2), std::move($3)}, @1); }
 | command { $$ = std::move($1); }
 | control { $$ = std::move($1); }
+| struct_def ';' {
+    CommandStmt c; c.words.push_back("Struct"); c.argStyle = CommandStmt::Args::Bare;
+    c.args.push_back(std::move($1)); $$ = makeStmt(std::move(c), @1); }
+| member_ref assign_op expr ';' {
+    CommandStmt c; c.words.push_back("Struct"); c.argStyle = CommandStmt::Args::Bare;
+    c.args.push_back(std::move($1)); c.op = std::move($2); c.value = std::move($3);
+    $$ = makeStmt(std::move(c), @1); }
 ;
+
+// Struct NS::Name (Append) [ Tag 3, epsr 5, mu {1, 2}, label "iron", Enum, A, B ]
+struct_def:
+  STRUCT struct_name struct_append '[' ']' {
+    $$ = std::move($2); $$->kind = ExprKind::StructDef; $$->loc = at(@1);
+    $$->text = std::move($3); }
+| STRUCT struct_name struct_append '[' struct_members ']' {
+    $$ = std::move($2); $$->kind = ExprKind::StructDef; $$->loc = at(@1);
+    $$->text = std::move($3); $$->attributes = std::move($5); }
+;
+struct_name:
+  name { $$ = makeExpr(ExprKind::Member, @1); $$->words.emplace_back(); $$->name = std::move($1); }
+| IDENT SCOPE name {
+    $$ = makeExpr(ExprKind::Member, @1); $$->words.push_back(std::move($1));
+    $$->name = std::move($3); }
+;
+// A Struct named in the text, or by a string: S2N["name"], NS::S2N[s] (an empty base name
+// with the string as its only suffix).
+struct_ref:
+  struct_name { $$ = std::move($1); }
+| name '[' expr ']' { $$ = grammar::structByString(std::move($1), "", std::move($3), @1); }
+| IDENT SCOPE name '[' expr ']' {
+    $$ = grammar::structByString(std::move($3), std::move($1), std::move($5), @1); }
+;
+struct_append:
+  %empty { }
+| '(' IDENT ')' {
+    if ($2 != "Append") throw SyntaxError(at(@2), "expected '(Append)' after the Struct name");
+    $$ = std::move($2); }
+;
+struct_members: struct_member { $$.push_back(std::move($1)); }
+              | struct_members ',' struct_member { $$ = std::move($1); $$.push_back(std::move($3)); } ;
+struct_member:
+  member_name { $$.name = std::move($1); $$.loc = at(@1); }
+| member_name expr { $$.name = std::move($1); $$.loc = at(@1); $$.values.push_back(std::move($2)); }
+;
+member_name: IDENT { $$ = std::move($1); } | WORD { $$ = std::move($1); }
+           | TAILWORD { $$ = std::move($1); } ;
+member_ref: struct_ref '.' IDENT { $$ = std::move($1); $$->text = std::move($3); } ;
 
 assign_op: '=' { $$ = "="; } | compound_op { $$ = std::move($1); } ;
 compound_op: PLUSEQ { $$ = "+="; } | MINUSEQ { $$ = "-="; } | TIMESEQ { $$ = "*="; }
@@ -361,15 +412,36 @@ primary:
 | '(' expr ')' { $$ = std::move($2); }
 | name { $$ = makeExpr(ExprKind::Variable, @1); $$->name = std::move($1); }
 | name '[' ']' { $$ = makeExpr(ExprKind::WholeList, @1); $$->name = std::move($1); }
-| name '[' expr ']' {
-    $$ = makeExpr(ExprKind::Element, @1); $$->name = std::move($1);
-    $$->args.push_back(std::move($3)); }
+| name '[' expr ']' { $$ = grammar::elementOrCall(std::move($1), std::move($3), @1); }
+| name '[' expr ',' args ']' {
+    if (!$1.suffixes.empty()) throw SyntaxError(at(@4), "unexpected ',' in a list index");
+    $$ = makeExpr(ExprKind::Call, @1); $$->text = std::move($1.base);
+    $$->args.push_back(std::move($3));
+    for (auto& arg : $5) $$->args.push_back(std::move(arg)); }
 | IDENT '(' args_opt ')' {
     $$ = makeExpr(ExprKind::Call, @1); $$->text = std::move($1); $$->args = std::move($3); }
 | '#' primary { $$ = makeExpr(ExprKind::Count, @1); $$->args.push_back(std::move($2)); }
 | '{' '}' { $$ = makeExpr(ExprKind::List, @1); }
 | '{' items '}' { $$ = makeExpr(ExprKind::List, @1); $$->args = std::move($2); }
 | option_path { $$ = std::move($1); }
+| struct_def { $$ = std::move($1); }
+| IDENT SCOPE name {
+    $$ = makeExpr(ExprKind::Member, @1); $$->words.push_back(std::move($1));
+    $$->name = std::move($3); }
+| IDENT SCOPE name '[' expr ']' {
+    $$ = grammar::structByString(std::move($3), std::move($1), std::move($5), @1); }
+| name '[' IDENT SCOPE '#' primary ']' {
+    $$ = grammar::indexInNamespace(std::move($1), std::move($3), std::move($6), @1); }
+| IDENT '(' IDENT SCOPE '#' primary ')' {
+    ast::Name function; function.base = std::move($1);
+    $$ = grammar::indexInNamespace(std::move(function), std::move($3), std::move($6), @1); }
+| member_ref { $$ = std::move($1); }
+| member_ref '(' ')' { $$ = std::move($1); $$->kind = ExprKind::MemberList; }
+| member_ref '[' ']' { $$ = std::move($1); $$->kind = ExprKind::MemberList; }
+| member_ref '(' expr ')' {
+    $$ = std::move($1); $$->kind = ExprKind::MemberItem; $$->args.push_back(std::move($3)); }
+| member_ref '[' expr ']' {
+    $$ = std::move($1); $$->kind = ExprKind::MemberItem; $$->args.push_back(std::move($3)); }
 | shape { $$ = std::move($1); }
 | words '(' args_opt ')' {
     $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "grammar/keywords.h"
 #include "interpreter/script_interpreter.h"
 #include "interpreter/session.h"
 #include "stdlib/format.h"
@@ -14,19 +15,6 @@
 #include "stdlib/system_info.h"
 
 namespace geomesh {
-
-namespace {
-
-constexpr std::string_view kFunctionNames[] = {
-    "AbsolutePath", "DirName", "Exists", "FileExists", "Find", "ListFromFile", "GetEnv",
-    "GetNumber", "GetString",
-    "GetValue", "LinSpace", "LogSpace", "LowerCase", "NameToString", "Sprintf", "Str", "StrCat",
-    "StrChoice", "StrCmp", "StrFind", "StrLen", "StrPrefix", "StrRelative", "StrReplace",
-    "StrSub", "Unique", "UpperCase", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Atan2",
-    "Sinh", "Cosh", "Tanh", "Exp", "Log", "Log10", "Sqrt", "Fabs", "Abs", "Floor", "Ceil",
-    "Round", "Fmod", "Modulo", "Hypot", "Rand", "Max", "Min", "Sign", "Step"};
-
-}  // namespace
 
 Value Interpreter::callFunction(const ast::Expr& call) {
   const std::string& name = call.text;
@@ -50,6 +38,7 @@ Value Interpreter::callFunction(const ast::Expr& call) {
   if (auto value = callStringFunction(call)) return *value;
   if (auto value = callListFunction(call)) return *value;
   if (auto value = callQueryFunction(call)) return *value;
+  if (auto value = callStructFunction(call)) return *value;
   // The old list syntax: a() is the whole list a[], a(i) its item a[i].
   if (auto it = variables_.find(name); it != variables_.end() && call.args.size() <= 1) {
     const Value& list = it->second;
@@ -62,7 +51,7 @@ Value Interpreter::callFunction(const ast::Expr& call) {
     const auto at = static_cast<std::size_t>(index);
     return list.isText() ? Value::string(list.strings()[at]) : Value::number(list.numbers()[at]);
   }
-  std::vector<std::string> known(std::begin(kFunctionNames), std::end(kFunctionNames));
+  std::vector<std::string> known(functionNames().begin(), functionNames().end());
   fail(call.loc, "unknown function '" + name + "'" + didYouMean(name, known));
 }
 
@@ -126,9 +115,15 @@ std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
   const std::string& name = call.text;
   const auto& args = call.args;
   if (name == "Exists") {
-    if (args.size() != 1 || args[0]->kind != ast::ExprKind::Variable)
-      fail(call.loc, "Exists takes a variable name");
-    return Value::number(variables_.contains(resolveName(args[0]->name)) ? 1 : 0);
+    const bool named = args.size() == 1 && (args[0]->kind == ast::ExprKind::Variable ||
+                                            args[0]->kind == ast::ExprKind::Member);
+    if (!named) fail(call.loc, "Exists takes a variable name or a Struct member");
+    const auto value = valueIfDefined(*args[0]);
+    if (!value) return Value::number(0);
+    // As in Gmsh, the name of a Struct (no variable) answers with the Struct's tag.
+    const bool structName = args[0]->kind == ast::ExprKind::Variable &&
+                            !variables_.contains(resolveName(args[0]->name));
+    return structName ? *value : Value::number(1);
   }
   if (name == "FileExists") {
     if (args.size() != 1) fail(call.loc, "FileExists takes a file name");

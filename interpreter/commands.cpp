@@ -62,6 +62,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
   const std::string& head = command.words.front();
   if (head == "Printf" && command.words.size() == 1) return executePrintf(command, where);
   if (head == "Include" && command.words.size() == 1) return executeInclude(command, where);
+  if (head == "Struct" && command.words.size() == 1) return executeStructStatement(command, where);
   if (head == "Exit") throw ScriptExit();
   if (head == "Abort") throw AbortScript();
   if ((head == "Error" || head == "Warning") && command.argStyle == ast::CommandStmt::Args::Paren &&

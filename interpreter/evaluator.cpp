@@ -36,6 +36,10 @@ Value Interpreter::evaluate(const Expr& expr) {
     case ExprKind::Shape: return shapeValue(expr);
     case ExprKind::DefineNumber: return defineNumber(expr);
     case ExprKind::DefineString: return defineString(expr);
+    case ExprKind::StructDef: return defineStruct(expr);
+    case ExprKind::Member:
+    case ExprKind::MemberItem:
+    case ExprKind::MemberList: return memberValue(expr);
   }
   fail(expr.loc, "unknown expression");
 }
@@ -98,6 +102,10 @@ Value Interpreter::variableValue(const Expr& expr) {
   auto it = variables_.find(name);
   if (it != variables_.end()) return it->second;
   if (auto constant = builtinConstant(name)) return *constant;
+  // A Struct of the global namespace stands for its tag.
+  if (auto global = structSpaces_.find(""); global != structSpaces_.end())
+    if (auto it = global->second.structs.find(name); it != global->second.structs.end())
+      return Value::number(it->second.tag);
   return requireVariable(name, expr.loc);
 }
 

@@ -118,6 +118,28 @@ class Interpreter {
   Value defineString(const ast::Expr& expr);
   std::optional<std::string> parameterName(const std::vector<ast::Attribute>& attributes);
 
+  // Struct definitions and members (structs.cpp)
+  struct StructData {
+    double tag = 0;
+    std::map<std::string, Value> members;
+    double enumValue = -1;  // the last value given, continued by Enum members without one
+  };
+  struct StructSpace {
+    std::map<std::string, StructData> structs;
+    double maxTag = 0;
+  };
+  Value defineStruct(const ast::Expr& definition);
+  void addStructMembers(StructData& data, const ast::Expr& definition);
+  std::string structKey(const ast::Expr& ref);
+  std::string structName(const ast::Expr& ref);
+  StructData* findStruct(const ast::Expr& ref);
+  StructData& requireStruct(const ast::Expr& ref);
+  const Value* findMember(const ast::Expr& ref);
+  Value memberValue(const ast::Expr& ref);
+  void executeStructStatement(const ast::CommandStmt& command, const SourceLocation& where);
+  std::optional<Value> valueIfDefined(const ast::Expr& expr);
+  std::optional<Value> callStructFunction(const ast::Expr& call);
+
   // diagnostics
   [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const;
   // Resource limits, from the options General.MaxLoopIterations / General.MaxMacroDepth.
@@ -135,6 +157,7 @@ class Interpreter {
   std::map<std::string, const ast::StmtList*> macros_;
   std::map<std::string, double> parameterNumbers_;
   std::map<std::string, std::string> parameterStrings_;
+  std::map<std::string, StructSpace> structSpaces_;  // by namespace; "" is the global one
   std::deque<SourceFile> sources_;
   std::deque<ast::StmtList> programs_;  // kept alive: macros point into them
   std::vector<std::string> includeStack_;
