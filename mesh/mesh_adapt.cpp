@@ -19,6 +19,8 @@ constexpr int kMaxPasses = 40;
 constexpr int kPassesWithoutProgress = 3;
 // A collapse may lower the quality of the triangles around it down to this, no further.
 constexpr double kCollapseQuality = 0.2;
+// A vertex that smoothing moves by less than this fraction of the target size has settled.
+constexpr double kSettled = 0.02;
 
 std::uint32_t nextCorner(std::uint32_t c) {
   return c % 3 == 2 ? c - 2 : c + 1;
@@ -307,7 +309,8 @@ class MeshAdapter {
               const SurfaceMetric* metric, const WorkPlaneSize* field)
       : mesh_(boundary, inside), background_(boundary, inside, sizes), metric_(metric),
         field_(field), firstMovable_(firstMovable), extended_(sizes),
-        target_(sizes.size()), hint_(sizes.size(), kNone), mark_(sizes.size(), 0) {
+        target_(sizes.size()), hint_(sizes.size(), kNone), mark_(sizes.size(), 0),
+        touched_(sizes.size(), 0) {
     for (std::uint32_t t = 0; t < boundary.triangleCount(); ++t)
       if (inside[t])
         for (int i = 0; i < 3; ++i) hint_[boundary.vertex(3 * t + i)] = t;
@@ -329,11 +332,22 @@ class MeshAdapter {
   }
   void updateSize(std::uint32_t v);
   double cappedByField(double size, Vec2 x) const;
+  template <class F>
+  void forEachFreeEdge(F f) const;
   std::vector<Edge> edgesOutside(bool longOnes) const;
+  struct Range {
+    std::size_t outside = 0;  // free edges out of range
+    double longest = 0;
+  };
+  Range range() const;
   std::size_t splitLongEdges();
   bool split(std::uint32_t corner);
   std::size_t collapseShortEdges();
   bool tryCollapse(std::uint32_t v, std::uint32_t w);
+  void touch(std::uint32_t v) { touched_[v] = pass_; }
+  // Whether v changed, or a neighbour of v moved, in this pass or the previous one: the
+  // rest of the mesh is as swaps and smoothing left it.
+  bool recent(std::uint32_t v) const { return everywhere_ || touched_[v] + 1 >= pass_; }
   void swapEdges();
   bool swapImproves(std::uint32_t corner) const;
   void smoothVertices();
@@ -352,6 +366,9 @@ class MeshAdapter {
   std::vector<std::uint32_t> hint_;  // per vertex: where its size was found in background_
   std::vector<std::uint32_t> mark_;  // per vertex: stamps of the link test
   std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> touched_;  // per vertex: the last pass that changed it
+  std::uint32_t pass_ = 1;
+  bool everywhere_ = true;  // swaps and smoothing go over the whole mesh
   std::vector<std::uint32_t> ring_, otherRing_;
 };
 
@@ -381,20 +398,39 @@ double MeshAdapter::cappedByField(double size, Vec2 x) const {
   return f > 0 ? std::min(size, f) : size;
 }
 
-// Free edges longer than the split length (longOnes) or shorter than the collapse length,
-// longest (shortest) first.
-std::vector<Edge> MeshAdapter::edgesOutside(bool longOnes) const {
-  std::vector<Edge> edges;
+MeshAdapter::Range MeshAdapter::range() const {
+  Range r;
+  forEachFreeEdge([&](std::uint32_t a, std::uint32_t b) {
+    const double l = length(a, b);
+    r.outside += l > kSplitAbove || l < kCollapseBelow;
+    r.longest = std::max(r.longest, l);
+  });
+  return r;
+}
+
+// Calls f(a, b) for each free edge once.
+template <class F>
+void MeshAdapter::forEachFreeEdge(F f) const {
   for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t) {
     if (!mesh_.alive(t)) continue;
     for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
       const std::uint32_t across = mesh_.neighbour(c);
-      if (across == kNone || across < c || mesh_.kind(c) != EdgeKind::Free) continue;
-      const std::uint32_t a = mesh_.vertex(nextCorner(c)), b = mesh_.vertex(prevCorner(c));
-      const double l = length(a, b);
-      if (longOnes ? l > kSplitAbove : l < kCollapseBelow) edges.push_back({l, a, b});
+      if (across != kNone && across > c && mesh_.kind(c) == EdgeKind::Free)
+        f(mesh_.vertex(nextCorner(c)), mesh_.vertex(prevCorner(c)));
     }
   }
+}
+
+// Free edges near recent changes longer than the split length (longOnes) or shorter than
+// the collapse length, longest (shortest) first. The others were out of range already in
+// the previous pass, and could not be split or collapsed then.
+std::vector<Edge> MeshAdapter::edgesOutside(bool longOnes) const {
+  std::vector<Edge> edges;
+  forEachFreeEdge([&](std::uint32_t a, std::uint32_t b) {
+    if (!recent(a) && !recent(b)) return;
+    const double l = length(a, b);
+    if (longOnes ? l > kSplitAbove : l < kCollapseBelow) edges.push_back({l, a, b});
+  });
   const auto key = [](const Edge& e) { return std::tuple(e.length, e.a, e.b); };
   std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) {
     return longOnes ? key(y) < key(x) : key(x) < key(y);
@@ -425,8 +461,10 @@ bool MeshAdapter::split(std::uint32_t c) {
   target_.push_back(0);
   hint_.push_back(hint_[u]);
   mark_.push_back(0);
+  touched_.push_back(0);
   updateSize(v);
   mesh_.split(c, v);
+  for (std::uint32_t changed : {x, u, w, y, v}) touch(changed);
   return true;
 }
 
@@ -462,6 +500,7 @@ bool MeshAdapter::tryCollapse(std::uint32_t v, std::uint32_t w) {
     newWorst = std::min(newWorst, quality(pw, pb, pa));
   }
   if (newWorst < std::min(oldWorst, kCollapseQuality)) return false;
+  for (std::uint32_t c : ring_) touch(mesh_.vertex(nextCorner(c)));
   mesh_.collapse(v, w, ring_);
   return true;
 }
@@ -470,16 +509,20 @@ bool MeshAdapter::tryCollapse(std::uint32_t v, std::uint32_t w) {
 // gets better. Each swap raises the sorted list of qualities, so the loop ends.
 void MeshAdapter::swapEdges() {
   std::vector<std::uint32_t> stack;
-  for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t)
-    if (mesh_.alive(t))
-      for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c)
-        if (mesh_.neighbour(c) != kNone && mesh_.neighbour(c) > c) stack.push_back(c);
+  for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t) {
+    if (!mesh_.alive(t) || !(recent(mesh_.vertex(3 * t)) || recent(mesh_.vertex(3 * t + 1)) ||
+                             recent(mesh_.vertex(3 * t + 2))))
+      continue;
+    for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c)
+      if (mesh_.neighbour(c) != kNone && mesh_.neighbour(c) > c) stack.push_back(c);
+  }
   std::reverse(stack.begin(), stack.end());
   while (!stack.empty()) {
     const std::uint32_t c = stack.back();
     stack.pop_back();
     if (!swapImproves(c)) continue;
     const std::uint32_t t1 = c / 3, t2 = mesh_.neighbour(c) / 3;
+    touch(mesh_.vertex(c)), touch(mesh_.vertex(mesh_.neighbour(c)));
     mesh_.flip(c);
     stack.insert(stack.end(), {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2});
   }
@@ -498,7 +541,7 @@ bool MeshAdapter::swapImproves(std::uint32_t c) const {
 
 void MeshAdapter::smoothVertices() {
   for (std::uint32_t v = firstMovable_; v < mesh_.pointCount(); ++v)
-    if (mesh_.inMesh(v)) smoothVertex(v);
+    if (mesh_.inMesh(v) && recent(v)) smoothVertex(v);
 }
 
 // Moves v towards the centroid of its neighbours, as far as keeps every triangle around it
@@ -518,6 +561,11 @@ bool MeshAdapter::smoothVertex(std::uint32_t v) {
     if (worstAround(p, ring_) >= worst && allPositiveAround(p, ring_)) {
       mesh_.movePoint(v, p);
       updateSize(v);
+      // Moves that no longer matter leave the neighbourhood settled.
+      if (metricLength(old, p) > kSettled * target_[v]) {
+        touch(v);
+        for (std::uint32_t c : ring_) touch(mesh_.vertex(nextCorner(c)));
+      }
       return true;
     }
   }
@@ -545,21 +593,22 @@ PlanarMesh MeshAdapter::run(int smoothingPasses) {
   // While edges more than twice too long remain, the mesh is still being refined and the
   // number of edges out of range grows; only then does it have to come down.
   std::size_t fewest = static_cast<std::size_t>(-1);
-  for (int pass = 0, stalled = 0; pass < kMaxPasses; ++pass) {
+  for (int pass = 0, stalled = 0; pass < kMaxPasses; ++pass, ++pass_) {
+    everywhere_ = pass == 0;
     splitLongEdges();
     collapseShortEdges();
     swapEdges();
     smoothVertices();
     swapEdges();
-    const std::vector<Edge> tooLong = edgesOutside(true);
-    const std::size_t outOfRange = tooLong.size() + edgesOutside(false).size();
-    if (outOfRange == 0) break;
-    if (!tooLong.empty() && tooLong.front().length > 2 * kSplitAbove) continue;
-    if (outOfRange < fewest)
-      fewest = outOfRange, stalled = 0;
+    const Range r = range();
+    if (r.outside == 0) break;
+    if (r.longest > 2 * kSplitAbove) continue;
+    if (r.outside < fewest)
+      fewest = r.outside, stalled = 0;
     else if (++stalled == kPassesWithoutProgress)
       break;
   }
+  everywhere_ = true;
   for (int pass = 0; pass < smoothingPasses; ++pass) {
     smoothVertices();
     swapEdges();
