@@ -12,9 +12,11 @@
 #include <vector>
 
 #include "kernel/geo/geo_factory.h"
+#include "mesh/constrained_delaunay.h"
 #include "mesh/curve_mesher.h"
 #include "mesh/generate.h"
 #include "mesh/mesh_check.h"
+#include "mesh/modifiable_triangulation.h"
 #include "mesh/quality.h"
 #include "mesh/surface_mesher.h"
 #include "mesh_test_models.h"
@@ -331,7 +333,8 @@ TEST(FrontalQuads, RecombinedOnlyWhenAsked) {
 TEST(FrontalQuads, CurvedBoundaryAndHole) {
   PolygonModelBuilder b;
   const std::vector<int> disc = b.circle({0, 0}, 1, 0.05);
-  const std::vector<int> hole = b.polygon({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 0.05);
+  const std::vector<int> hole =
+      b.polygon({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 0.05);
   b.surface({disc, hole});
   MeshOptions options;
   options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
@@ -351,6 +354,67 @@ TEST(FrontalQuads, CurvedBoundaryAndHole) {
   const QualityStats gamma = meshQuality(mesh, 2, QualityMeasure::Gamma);
   EXPECT_GT(gamma.min, 0.3);
   EXPECT_GT(gamma.mean, 0.8);
+}
+
+// Every neighbour link goes both ways across the same two vertices.
+void expectConsistent(const ModifiableTriangulation& m) {
+  using T = ModifiableTriangulation;
+  for (std::uint32_t t = 0; t < m.triangleCount(); ++t) {
+    if (!m.alive(t)) continue;
+    for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
+      const std::uint32_t across = m.neighbour(c);
+      if (across == kNone) continue;
+      ASSERT_TRUE(m.alive(across / 3));
+      EXPECT_EQ(m.neighbour(across), c);
+      EXPECT_EQ(m.vertex(T::nextCorner(c)), m.vertex(T::prevCorner(across)));
+      EXPECT_EQ(m.vertex(T::prevCorner(c)), m.vertex(T::nextCorner(across)));
+    }
+  }
+}
+
+std::size_t aliveCount(const ModifiableTriangulation& m) {
+  std::size_t n = 0;
+  for (std::uint32_t t = 0; t < m.triangleCount(); ++t) n += m.alive(t);
+  return n;
+}
+
+TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
+  // The unit square in two triangles.
+  const std::vector<Vec2> corners{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  Triangulation2D tri = delaunayTriangulation(corners);
+  std::vector<ConstrainedSegment> sides;
+  constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
+  for (std::uint32_t k = 0; k < 4; ++k) sides.push_back({k + first, (k + 1) % 4 + first});
+  ASSERT_EQ(recoverSegments(tri, sides), -1);
+  ModifiableTriangulation m(tri, classifyInside(tri));
+  ASSERT_EQ(aliveCount(m), 2u);
+  std::uint32_t diagonal = kNone;
+  for (std::uint32_t c = 0; c < 6 && diagonal == kNone; ++c)
+    if (m.neighbour(c) != kNone) diagonal = c;
+  ASSERT_NE(diagonal, kNone);
+  const std::uint32_t a = m.vertex(ModifiableTriangulation::nextCorner(diagonal));
+  const std::uint32_t b = m.vertex(ModifiableTriangulation::prevCorner(diagonal));
+  const std::uint32_t centre = m.addPoint({0.5, 0.5});
+  m.split(diagonal, centre);
+  expectConsistent(m);
+  EXPECT_EQ(aliveCount(m), 4u);
+  std::vector<std::uint32_t> ring;
+  EXPECT_TRUE(m.ring(centre, ring));  // interior
+  EXPECT_EQ(ring.size(), 4u);
+  EXPECT_FALSE(m.ring(a, ring));      // on the boundary
+  EXPECT_EQ(m.findEdge(a, b), kNone);
+  const std::uint32_t spoke = m.findEdge(centre, a);
+  ASSERT_NE(spoke, kNone);
+  m.flip(spoke);  // links only: the new edge runs through the centre, which is flat here
+  expectConsistent(m);
+  EXPECT_EQ(m.findEdge(centre, a), kNone);
+  EXPECT_TRUE(m.ring(centre, ring));
+  EXPECT_EQ(ring.size(), 3u);
+  const std::uint32_t into = m.vertex(ModifiableTriangulation::nextCorner(ring[0]));
+  m.collapse(centre, into, ring);
+  expectConsistent(m);
+  EXPECT_EQ(aliveCount(m), 2u);
+  EXPECT_FALSE(m.inMesh(centre));
 }
 
 TEST(MeshAdapt, InitialMeshOnlyAddsNoNode) {
