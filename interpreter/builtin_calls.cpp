@@ -132,12 +132,13 @@ std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
     std::error_code ignored;
     return Value::number(std::filesystem::exists(p, ignored) ? 1 : 0);
   }
-  if (name == "GetNumber" || name == "GetValue") {
-    if (args.empty() || args.size() > 2) fail(call.loc, "'" + name + "' takes 1 or 2 arguments");
+  // GetNumber and GetString read parameters (DefineConstant's Name, SetNumber, -setnumber),
+  // never options: that is Gmsh's behaviour too.
+  if (name == "GetNumber") {
+    if (args.empty() || args.size() > 2) fail(call.loc, "GetNumber takes 1 or 2 arguments");
     const std::string key = evaluateString(*args[0]);
     if (auto it = parameterNumbers_.find(key); it != parameterNumbers_.end())
       return Value::number(it->second);
-    if (session_.options().hasNumber(key)) return Value::number(session_.options().number(key));
     return Value::number(args.size() > 1 ? evaluateNumber(*args[1]) : 0);
   }
   if (name == "GetString") {
@@ -145,8 +146,18 @@ std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
     const std::string key = evaluateString(*args[0]);
     if (auto it = parameterStrings_.find(key); it != parameterStrings_.end())
       return Value::string(it->second);
-    if (session_.options().hasString(key)) return Value::string(session_.options().string(key));
     return Value::string(args.size() > 1 ? evaluateString(*args[1]) : "");
+  }
+  if (name == "GetValue") {
+    // A question for an interactive user: in a batch run, the prompt is shown and the
+    // default is the answer.
+    if (args.size() != 2) fail(call.loc, "GetValue takes a prompt and a default value");
+    const std::string prompt = evaluateString(*args[0]);
+    const double answer = evaluateNumber(*args[1]);
+    if (session_.options().number("General.Verbosity") >= 3)
+      session_.out() << prompt << " (default=" << formatPrintf("%g", std::vector<FormatArgument>{answer})
+                     << "): ";
+    return Value::number(answer);
   }
   return std::nullopt;
 }
@@ -162,7 +173,7 @@ std::optional<Value> Interpreter::builtinConstant(std::string_view name) {
   if (name == "Memory") return Value::number(processMemoryMegabytes());
   if (name == "TotalMemory") return Value::number(totalMemoryMegabytes());
   GeoFactory& geo = session_.geo();
-  int region = 0;
+  int region = deletedPhysicalTag_;
   for (const auto& [id, group] : geo.physicalGroups()) region = std::max(region, id.tag);
   for (int kind : {1, 2, 3, int(GeoFactory::kCurveLoop), int(GeoFactory::kSurfaceLoop)})
     region = std::max(region, geo.maxTag(kind));

@@ -127,24 +127,16 @@ void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLoc
   file << line << '\n';
 }
 
+// SetNumber("name", x); SetString("name", "s"); set parameters, read back by GetNumber /
+// GetString. Like Gmsh, they leave options alone even when the name is an option's.
 void Interpreter::executeSetter(const ast::CommandStmt& command, const SourceLocation& where) {
   const std::string& head = command.words.front();
   if (command.args.size() != 2) fail(where, "'" + head + "' takes a name and a value");
   const std::string key = evaluateString(*command.args[0]);
-  if (head == "SetNumber") {
-    const double value = evaluateNumber(*command.args[1]);
-    if (session_.options().hasNumber(key)) {
-      session_.options().setNumber(key, value);
-      optionChanged(session_.options().find(key)->name);
-    } else
-      parameterNumbers_[key] = value;
-    return;
-  }
-  std::string value = evaluateString(*command.args[1]);
-  if (session_.options().hasString(key))
-    session_.options().setString(key, std::move(value));
+  if (head == "SetNumber")
+    parameterNumbers_[key] = evaluateNumber(*command.args[1]);
   else
-    parameterStrings_[key] = std::move(value);
+    parameterStrings_[key] = evaluateString(*command.args[1]);
 }
 
 void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,

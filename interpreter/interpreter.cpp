@@ -34,7 +34,12 @@ void runScriptText(Session& session, const std::string& text, const std::string&
   Interpreter(session).runText(text, name);
 }
 
-Interpreter::Interpreter(Session& session) : session_(session) {}
+// Values given by -setnumber / -setstring are variables before the script starts: the
+// script reads them directly, and DefineConstant leaves them as they are.
+Interpreter::Interpreter(Session& session) : session_(session) {
+  for (const auto& [name, value] : session.numberOverrides()) variables_[name] = Value::number(value);
+  for (const auto& [name, value] : session.stringOverrides()) variables_[name] = Value::string(value);
+}
 
 void Interpreter::runFile(const std::string& path) {
   auto text = readFile(path);
@@ -76,7 +81,7 @@ void Interpreter::execute(const ast::Stmt& statement) {
         if constexpr (std::is_same_v<Node, ast::CommandStmt>) executeCommand(node, where);
         if constexpr (std::is_same_v<Node, ast::ForStmt>) executeFor(node, where);
         if constexpr (std::is_same_v<Node, ast::IfStmt>) executeIf(node);
-        if constexpr (std::is_same_v<Node, ast::MacroStmt>) macros_[node.name] = &node.body;
+        if constexpr (std::is_same_v<Node, ast::MacroStmt>) defineMacro(node, where);
         if constexpr (std::is_same_v<Node, ast::CallStmt>) executeCall(node, where);
         if constexpr (std::is_same_v<Node, ast::DefineConstantStmt>) executeDefineConstant(node);
         if constexpr (std::is_same_v<Node, ast::PluginStmt>)
@@ -86,9 +91,9 @@ void Interpreter::execute(const ast::Stmt& statement) {
       statement.node);
 }
 
-// For i In {a:b:c} counts from a by c (default 1, whatever the direction) while it has not
-// passed b; afterwards i holds the first value past the end, as in Gmsh. Other lists are
-// walked item by item and leave i at the last item.
+// For i In {a:b:c} counts from a by c (default 1, whatever the direction), adding c each
+// time, while it has not passed b; afterwards i holds the first value past the end, as in
+// Gmsh. Other lists are walked item by item and leave i at the last item.
 void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& where) {
   const ast::Expr* range = loop.range.get();
   if (range->kind == ast::ExprKind::List && range->args.size() == 1 &&
@@ -102,12 +107,10 @@ void Interpreter::executeFor(const ast::ForStmt& loop, const SourceLocation& whe
     const double last = evaluateNumber(*range->args[1]);
     const double step = range->args.size() > 2 ? evaluateNumber(*range->args[2]) : 1.0;
     if (step == 0) fail(range->loc, "loop step must not be zero");
-    const double span = (last - first) / step;
-    const double count = std::floor(span + 1e-10 * std::max(1.0, std::fabs(span))) + 1;
-    if (count > maxLoopIterations()) failTooManyIterations(where);
-    for (long long i = 0; i < static_cast<long long>(count); ++i)
-      values.push_back(first + static_cast<double>(i) * step);
-    after = first + static_cast<double>(values.size()) * step;
+    if ((last - first) / step + 1 > maxLoopIterations()) failTooManyIterations(where);
+    double value = first;
+    for (; step > 0 ? value <= last : value >= last; value += step) values.push_back(value);
+    after = value;
   } else {
     values = evaluateNumbers(*range);
     if (static_cast<double>(values.size()) > maxLoopIterations()) failTooManyIterations(where);
@@ -139,6 +142,12 @@ void Interpreter::executeIf(const ast::IfStmt& branches) {
     }
   }
   execute(branches.elseBody);
+}
+
+// A second definition of a macro is ignored with a warning: Gmsh keeps the first too.
+void Interpreter::defineMacro(const ast::MacroStmt& macro, const SourceLocation& where) {
+  if (!macros_.emplace(macro.name, &macro.body).second)
+    warn(where, "macro '" + macro.name + "' is already defined; this definition is ignored");
 }
 
 void Interpreter::executeCall(const ast::CallStmt& call, const SourceLocation& where) {

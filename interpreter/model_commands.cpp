@@ -67,7 +67,7 @@ bool Interpreter::executeModelCommand(const ast::CommandStmt& command,
   if (w.size() == 1 && (w[0] == "NewModel" || w[0] == "SyncModel") && command.args.empty()) {
     // The built-in kernel's entities reach the model before every use: SyncModel has
     // nothing left to do.
-    if (w[0] == "NewModel") session_.clearModel();
+    if (w[0] == "NewModel") startNewModel();
     return true;
   }
   if (w.size() == 1 && (w[0] == "RenumberMeshNodes" || w[0] == "RenumberMeshElements") &&
@@ -78,6 +78,11 @@ bool Interpreter::executeModelCommand(const ast::CommandStmt& command,
   if (w.size() == 1 && w[0] == "Delete" && bare && !command.shape)
     return deleteByName(*command.args[0], where);
   return false;
+}
+
+void Interpreter::startNewModel() {
+  session_.clearModel();
+  deletedPhysicalTag_ = 0;
 }
 
 // Mesh n; meshes the model as it stands, up to dimension n, with the options set so far.
@@ -142,7 +147,7 @@ bool Interpreter::deleteByName(const ast::Expr& what, const SourceLocation& wher
   if (what.kind != ast::ExprKind::Variable) return false;
   const std::string name = resolveName(what.name);
   if (what.name.suffixes.empty() && (name == "Model" || name == "All")) {
-    session_.clearModel();
+    startNewModel();
     return true;
   }
   if (what.name.suffixes.empty() && name == "Variables") {

@@ -13,8 +13,9 @@ std::optional<std::string> Interpreter::parameterName(
   return std::nullopt;
 }
 
-// Each constant is defined unless a variable of that name exists already; a value given with
-// -setnumber / -setstring (by variable name or by its Name attribute) wins over the script's.
+// Each constant is defined unless a variable of that name exists already (-setnumber /
+// -setstring by variable name make it exist beforehand); a value given by its Name attribute
+// on the command line wins over the script's.
 void Interpreter::executeDefineConstant(const ast::DefineConstantStmt& define) {
   for (const auto& constant : define.constants) {
     const std::string name = resolveName(constant.name);
@@ -23,13 +24,8 @@ void Interpreter::executeDefineConstant(const ast::DefineConstantStmt& define) {
     const auto& numbers = session_.numberOverrides();
     const auto& strings = session_.stringOverrides();
     Value value;
-    if (auto it = numbers.find(name); it != numbers.end()) {
-      value = Value::number(it->second);
-    } else if (auto byLabel = label ? numbers.find(*label) : numbers.end();
-               byLabel != numbers.end()) {
+    if (auto byLabel = label ? numbers.find(*label) : numbers.end(); byLabel != numbers.end()) {
       value = Value::number(byLabel->second);
-    } else if (auto s = strings.find(name); s != strings.end()) {
-      value = Value::string(s->second);
     } else if (auto sl = label ? strings.find(*label) : strings.end(); sl != strings.end()) {
       value = Value::string(sl->second);
     } else {

@@ -46,6 +46,7 @@ class Interpreter {
   void executeFor(const ast::ForStmt& loop, const SourceLocation& where);
   void executeIf(const ast::IfStmt& branches);
   void executeCall(const ast::CallStmt& call, const SourceLocation& where);
+  void defineMacro(const ast::MacroStmt& macro, const SourceLocation& where);
   void executeInclude(const ast::CommandStmt& command, const SourceLocation& where);
   void executeOptionAssign(const ast::OptionAssignStmt& assign, const SourceLocation& where);
 
@@ -65,6 +66,7 @@ class Interpreter {
   Value binaryValue(const ast::Expr& expr);
   Value optionValue(const ast::Expr& expr);
   Value shapeValue(const ast::Expr& expr);
+  Value physicalQuery(const ast::Expr& expr, int dim);
 
   // built-in functions and constants
   Value callFunction(const ast::Expr& call);
@@ -102,6 +104,7 @@ class Interpreter {
   // the whole model and its mesh: Mesh n, Save, Merge, Delete Model, ... (model_commands.cpp)
   bool executeModelCommand(const ast::CommandStmt& command, const SourceLocation& where);
   void meshNow(const ast::Expr& dimension, const SourceLocation& where);
+  void startNewModel();
   void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);
@@ -163,6 +166,7 @@ class Interpreter {
   std::vector<std::string> includeStack_;
   mutable std::set<std::string> warned_;
   int callDepth_ = 0;
+  int deletedPhysicalTag_ = 0;  // the largest tag of the groups Delete Physicals removed
   RandomEngine random_;
 };
 

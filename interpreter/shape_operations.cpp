@@ -186,6 +186,9 @@ bool Interpreter::executeShapeCommand(const ast::CommandStmt& command,
       return true;
     }
     if (w == Words{"Delete", "Physicals"} && !command.shape) {
+      // newreg keeps counting past the deleted groups, as in Gmsh.
+      for (const auto& [id, group] : geo.physicalGroups())
+        deletedPhysicalTag_ = std::max(deletedPhysicalTag_, id.tag);
       geo.clearPhysicalGroups();
       return true;
     }
@@ -229,9 +232,31 @@ bool Interpreter::executeShapeCommand(const ast::CommandStmt& command,
 // Point{t}: its coordinates. Curve{..}, Surface{:}: tags. Operations: the tags they give.
 // Volume In BoundingBox{..}: the tags of the entities inside. BoundingBox Surface{..}: the
 // box {xmin, ymin, zmin, xmax, ymax, zmax} around them.
+// Physical Curve{:} lists the tags of the physical curves; Physical Curve{t, ...} the
+// curves of those groups (none for an unknown tag, as in Gmsh).
+Value Interpreter::physicalQuery(const ast::Expr& expr, int dim) {
+  const auto& groups = session_.geo().physicalGroups();
+  const auto& items = expr.parts[0].items;
+  std::vector<double> result;
+  if (items.size() == 1 && items[0]->kind == ast::ExprKind::All) {
+    for (const auto& [id, group] : groups)
+      if (id.dim == dim) result.push_back(id.tag);
+    return Value::list(std::move(result));
+  }
+  for (double tag : evaluateNumbers(items)) {
+    auto it = groups.find(EntityId{dim, static_cast<int>(tag)});
+    if (it != groups.end())
+      result.insert(result.end(), it->second.entities.begin(), it->second.entities.end());
+  }
+  return Value::list(std::move(result));
+}
+
 Value Interpreter::shapeValue(const ast::Expr& expr) {
   const Words& w = expr.words;
-  if (w == Words{"Point"} && expr.parts.size() == 1 && !expr.parts[0].isBlock) {
+  // Point{n} is the point's coordinates, but Point{:} the tags of all points, as in Gmsh.
+  const bool allPoints = expr.parts.size() == 1 && expr.parts[0].items.size() == 1 &&
+                         expr.parts[0].items[0]->kind == ast::ExprKind::All;
+  if (w == Words{"Point"} && expr.parts.size() == 1 && !expr.parts[0].isBlock && !allPoints) {
     std::vector<double> coordinates;
     for (int tag : shapeTags(expr, 0)) {
       try {
@@ -244,7 +269,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
     return Value::list(std::move(coordinates));
   }
   const int dim = entityDimension(w);
-  if (dim > 0 && expr.parts.size() == 1 && !expr.parts[0].isBlock)
+  if (dim >= 0 && expr.parts.size() == 1 && !expr.parts[0].isBlock)
     return Value::list(asDoubles(shapeTags(expr, dim)));
   if (w.size() == 3 && w[1] == "In" && w[2] == "BoundingBox" && entityDimension({w[0]}) >= 0) {
     const std::vector<double> v = shapeArguments(expr);
@@ -274,6 +299,9 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
       fail(expr.loc, error.what());
     }
   }
+  if (w.size() == 2 && w[0] == "Physical" && entityDimension({w[1]}) >= 0 &&
+      expr.parts.size() == 1 && !expr.parts[0].isBlock)
+    return physicalQuery(expr, entityDimension({w[1]}));
   if (auto shapes = shapeOperation(expr)) return Value::list(asDoubles(tagsOf(*shapes)));
   warn(expr.loc, "'" + (w.empty() ? std::string("{..}") : w[0]) +
                      "' is not supported yet; gives an empty list");

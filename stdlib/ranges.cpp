@@ -5,17 +5,15 @@
 
 namespace geomesh {
 
+// Like Gmsh, the value grows by repeated addition and the range stops as soon as it passes
+// `last`, with no tolerance: 0:1:0.1 has 11 values, the last one 0.9999999999999999, and
+// 0:0.3:0.1 has 3.
 std::vector<double> expandRange(double first, double last, std::optional<double> step) {
   const double delta = step ? *step : (first <= last ? 1.0 : -1.0);
   if (delta == 0) throw std::invalid_argument("range step must not be zero");
   std::vector<double> values;
-  const double span = (last - first) / delta;
-  if (span < -1e-10) return values;
-  // A relative tolerance absorbs rounding: 0:1:0.1 ends at 1, not 0.9.
-  const auto count = static_cast<long long>(std::floor(span + 1e-10 * std::max(1.0, span))) + 1;
-  if (count > 10'000'000) throw std::invalid_argument("range has too many values");
-  values.reserve(static_cast<std::size_t>(count));
-  for (long long i = 0; i < count; ++i) values.push_back(first + static_cast<double>(i) * delta);
+  if ((last - first) / delta > 10'000'000) throw std::invalid_argument("range has too many values");
+  for (double x = first; delta > 0 ? x <= last : x >= last; x += delta) values.push_back(x);
   return values;
 }
 

@@ -39,7 +39,14 @@ TEST(Parameters, SetAndGet) {
   EXPECT_EQ(printed("SetNumber(\"P/z\", 5); Printf(\"%g %g\", GetNumber(\"P/z\"), GetNumber(\"P/q\", 7));"),
             "5 7\n");
   EXPECT_EQ(printed("SetString(\"P/w\", \"hi\"); Printf(GetString(\"P/w\"));"), "hi\n");
-  EXPECT_EQ(printed("SetNumber(\"Mesh.Algorithm\", 5); Printf(\"%g\", Mesh.Algorithm);"), "5\n");
+  // Parameters and options are apart, as in Gmsh: SetNumber leaves the option alone and
+  // GetNumber does not read options.
+  EXPECT_EQ(printed("SetNumber(\"Mesh.Algorithm\", 5);\n"
+                    "Printf(\"%g %g\", Mesh.Algorithm, GetNumber(\"Mesh.Algorithm\"));"),
+            "6 5\n");
+  EXPECT_EQ(printed("Printf(\"%g\", GetNumber(\"Mesh.Algorithm\"));"), "0\n");
+  EXPECT_EQ(printed("x = GetValue(\"Size?\", 0.5); Printf(\"%g\", x);"),
+            "Size? (default=0.5): 0.5\n");
 }
 
 TEST(Parameters, ExistsAndFileExists) {

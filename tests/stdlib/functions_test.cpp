@@ -25,6 +25,16 @@ TEST(Ranges, DirectionAndStep) {
   EXPECT_THROW(range(0, 1, 0), std::invalid_argument);
 }
 
+// Values grow by repeated addition and stop once past the end, without tolerance (Gmsh's
+// rule): 0:0.3:0.1 stops before 0.30000000000000004.
+TEST(Ranges, FractionalStepsAccumulateLikeGmsh) {
+  EXPECT_EQ(range(0, 0.3, 0.1).size(), 3u);
+  EXPECT_EQ(range(0, 1, 0.1).back(), 0.1 + 0.1 + 0.1 + 0.1 + 0.1 + 0.1 + 0.1 + 0.1 + 0.1 + 0.1);
+  EXPECT_EQ(range(0.1, 0.35, 0.05).size(), 6u);
+  EXPECT_EQ(range(1, 0, -0.25), (std::vector<double>{1, 0.75, 0.5, 0.25, 0}));
+  EXPECT_THROW(range(0, 1e9, 1), std::invalid_argument);
+}
+
 TEST(Ranges, LinAndLogSpace) {
   EXPECT_EQ(linSpace(0, 1, 5), (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
   EXPECT_DOUBLE_EQ(logSpace(0, 2, 3)[2], 100);

@@ -1,0 +1,21 @@
+// Math functions and constants as size formulas use them.
+Printf("%.6g %.6g %.6g", Sin(Pi / 6), Cos(Pi / 3), Tan(Pi / 4));
+Printf("%.6g %.6g %.6g", Asin(1), Acos(0), Atan(1));
+Printf("%.6g %.6g", Atan2(1, -1), Atan2(-1, -1));
+Printf("%.6g %.6g %.6g", Sinh(1), Cosh(1), Tanh(1));
+Printf("%.6g %.6g %.6g %.6g", Exp(1), Log(10), Log10(1000), Sqrt(2));
+Printf("%g %g %g %g", Fabs(-3.5), Abs(-2), Floor(-2.5), Ceil(-2.5));
+Printf("%g %g %g %g", Round(2.5), Round(-2.5), Round(2.4), Fmod(7.5, 2));
+Printf("%g %g", Modulo(-7, 3), Fmod(-7, 3));
+Printf("%g %g %g", Hypot(3, 4), Max(2, 7), Min(2, 7));
+Printf("%g %g", Sqrt(16) ^ 2, 10 / 4);
+Printf("%g", 1e3 * 2.5e-2);
+Printf("%g %g", 3 % 2, 2.5 % 1);
+r = Rand(1);
+Printf("random in range: %g", r >= 0 && r <= 1);
+lc = 0.1;
+Printf("sizes %g %g %g", lc / 2, lc * 2^3, lc * (1 + 0.5)^2);
+Printf("%.3f", 4 * Atan(1));
+Printf("%g %g", 1.5e+2, .5);
+Printf("%g", 2 * -3);
+Printf("%g", -(2 + 3) * 2);

@@ -1,0 +1,26 @@
+// Options set and read in scripts: arithmetic on them, old names, colours and strings.
+Mesh.MeshSizeMax = 0.5;
+Mesh.MeshSizeMax *= 2;
+Mesh.MeshSizeMax -= 0.25;
+Printf("size max %g", Mesh.MeshSizeMax);
+Mesh.CharacteristicLengthFactor = 0.5;
+Printf("factor %g", Mesh.MeshSizeFactor);
+Mesh.Algorithm = 5;
+Mesh.Algorithm3D = 4;
+Printf("algorithms %g %g", Mesh.Algorithm, Mesh.Algorithm3D);
+Geometry.Color.Points = {255, 0, 0};
+Mesh.Color.Triangles = Red;
+General.Color.Background = White;
+Mesh.Color.Lines = {0, 0, 255};
+Printf("colours accepted");
+Mesh.ElementOrder = 2;
+Mesh.SecondOrderLinear = 1;
+Printf("order %g linear %g", Mesh.ElementOrder, Mesh.SecondOrderLinear);
+Mesh.MinimumCurveNodes = 5;
+Mesh.MinimumElementsPerTwoPi = 20;
+Printf("min curve nodes %g, per 2 pi %g", Mesh.MinCurveNodes, Mesh.MeshSizeFromCurvature);
+Geometry.OldNewReg = 0;
+Printf("old new reg %g", Geometry.OldNewReg);
+Printf("defaults %g %g %g", Mesh.MshFileVersion, Mesh.Smoothing, Geometry.Tolerance);
+Mesh.Format = 1;
+Printf("format %g", Mesh.Format);

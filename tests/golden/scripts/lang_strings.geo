@@ -1,0 +1,24 @@
+// String functions as users combine them to build file names and labels.
+base = "wing_section";
+file = StrCat(base, "_", Sprintf("%03g", 7), ".msh");
+Printf(file);
+Printf("length %g", StrLen(file));
+Printf(StrPrefix(file));
+Printf(StrRelative("/some/dir/model.geo"));
+Printf(DirName("/some/dir/model.geo"));
+Printf(StrSub(file, 5, 7));
+Printf(StrSub(file, 5));
+Printf(UpperCase(base));
+Printf(LowerCase("MiXeD"));
+Printf(StrReplace(file, "_", "-"));
+Printf("find %g %g", StrFind(file, "section"), StrFind(file, "tail"));
+Printf("cmp %g %g %g", StrCmp("abc", "abc"), StrCmp("abc", "abd") < 0, StrCmp("b", "a") > 0);
+Printf(StrChoice(1, "yes", "no"));
+Printf(StrChoice(0, "yes", "no"));
+Printf(Str("one"));
+s = Sprintf("%g-%g", 1, 2);
+Printf(s);
+Printf(StrCat("a", "b", "c"));
+t[] = Str("x", "y", "z");
+Printf("%g strings", #t[]);
+Printf(t[1]);
