@@ -240,7 +240,8 @@ class FrontalRefiner {
         const Vec2 x{base.u + target * d.u, base.v + target * d.v};
         const double score =
             std::abs(maxNorm(sub(x, a)) - target) + std::abs(maxNorm(sub(x, b)) - target);
-        if (score < bestScore) best = x, bestScore = score;
+        // Rounding must not decide between equally good candidates: the first one stays.
+        if (score < bestScore - 1e-9 * target) best = x, bestScore = score;
       }
     const Vec2 x = f.invert(best);
     if (bestScore == 1e300 || incircle(p(t, 0), p(t, 1), p(t, 2), x) <= 0)

@@ -1,5 +1,7 @@
 #include "mesh/smoothing.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "mesh/predicates.h"
@@ -29,8 +31,43 @@ Incidence buildIncidence(const Triangulation2D& tri, const std::vector<std::uint
   return inc;
 }
 
-// Moves v to the centroid of its ring if every triangle around it stays positive.
-void smoothVertex(Triangulation2D& tri, const Incidence& inc, std::uint32_t v) {
+// gamma of a triangle in the metric at its centroid (plain lengths without one); 0 if it is
+// not positive.
+double quality(Vec2 a, Vec2 b, Vec2 c, const SurfaceMetric* metric) {
+  if (metric) {
+    const MetricFrame f(metric->at({(a.u + b.u + c.u) / 3, (a.v + b.v + c.v) / 3}));
+    a = f.apply(a), b = f.apply(b), c = f.apply(c);
+  }
+  const double area = 0.5 * ((b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u));
+  if (!(area > 0)) return 0;
+  const auto length = [](Vec2 d) { return std::sqrt(d.u * d.u + d.v * d.v); };
+  const double la = length({c.u - b.u, c.v - b.v}), lb = length({a.u - c.u, a.v - c.v}),
+               lc = length({b.u - a.u, b.v - a.v});
+  return 16 * area * area / (la * lb * lc * (la + lb + lc));
+}
+
+// The worst quality of v's triangles with v at p (plain lengths without a metric, -1 if one
+// of them is not positive); without `withQuality`, 1 if all are positive.
+double worstAround(const Triangulation2D& tri, const Incidence& inc, std::uint32_t v, Vec2 p,
+                   bool withQuality, const SurfaceMetric* metric) {
+  double worst = 1;
+  for (std::uint32_t k = inc.offsets[v]; k < inc.offsets[v + 1]; ++k) {
+    const std::uint32_t t = inc.triangles[k];
+    Vec2 q[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t w = tri.vertex(3 * t + i);
+      q[i] = w == v ? p : tri.point(w);
+    }
+    if (orient2d(q[0], q[1], q[2]) <= 0) return -1;
+    if (withQuality) worst = std::min(worst, quality(q[0], q[1], q[2], metric));
+  }
+  return worst;
+}
+
+// Moves v to the centroid of its ring if every triangle around it stays positive (and, with
+// the quality guard, the worst of them is no worse; else half or a quarter of the way).
+void smoothVertex(Triangulation2D& tri, const Incidence& inc, std::uint32_t v,
+                  const SurfaceMetric* metric, SmoothingGuard guard) {
   const std::uint32_t begin = inc.offsets[v], end = inc.offsets[v + 1];
   if (begin == end) return;
   double su = 0, sv = 0;
@@ -46,16 +83,18 @@ void smoothVertex(Triangulation2D& tri, const Incidence& inc, std::uint32_t v) {
   const Vec2 old = tri.point(v);
   const double count = 2.0 * (end - begin);
   const Vec2 target{(su - (end - begin) * old.u) / count, (sv - (end - begin) * old.v) / count};
-  for (std::uint32_t k = begin; k < end; ++k) {
-    const std::uint32_t t = inc.triangles[k];
-    Vec2 q[3];
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t w = tri.vertex(3 * t + i);
-      q[i] = w == v ? target : tri.point(w);
-    }
-    if (orient2d(q[0], q[1], q[2]) <= 0) return;
+  if (guard == SmoothingGuard::Validity) {
+    if (worstAround(tri, inc, v, target, false, nullptr) > 0) tri.movePoint(v, target);
+    return;
   }
-  tri.movePoint(v, target);
+  const double before = worstAround(tri, inc, v, old, true, metric);
+  for (double step : {1.0, 0.5, 0.25}) {
+    const Vec2 p{old.u + step * (target.u - old.u), old.v + step * (target.v - old.v)};
+    if (worstAround(tri, inc, v, p, true, metric) >= before) {
+      tri.movePoint(v, p);
+      return;
+    }
+  }
 }
 
 // True if the free edge of `corner` is not locally Delaunay in the metric at its midpoint.
@@ -95,11 +134,13 @@ void restoreMetricDelaunay(Triangulation2D& tri, std::vector<std::uint32_t> stac
 }  // namespace
 
 void smoothTriangulation(Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-                         std::uint32_t firstMovable, int passes, const SurfaceMetric* metric) {
+                         std::uint32_t firstMovable, int passes, const SurfaceMetric* metric,
+                         SmoothingGuard guard) {
   const std::uint32_t vertexCount = static_cast<std::uint32_t>(tri.pointCount());
   for (int pass = 0; pass < passes; ++pass) {
     const Incidence inc = buildIncidence(tri, inside);
-    for (std::uint32_t v = firstMovable; v < vertexCount; ++v) smoothVertex(tri, inc, v);
+    for (std::uint32_t v = firstMovable; v < vertexCount; ++v)
+      smoothVertex(tri, inc, v, metric, guard);
     std::vector<std::uint32_t> corners;
     corners.reserve(3 * tri.triangleCount());
     for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)

@@ -168,8 +168,10 @@ PlanarMesh meshInterior(Triangulation2D tri, std::vector<std::uint8_t> inside,
   if (algorithm2D == algorithm2d::kMeshAdapt)
     return adaptMesh(tri, inside, sizes, firstMovable, smoothingPasses, metric, field);
   if (algorithm2D == algorithm2d::kFrontalDelaunayQuads) {
-    // Smoothing would pull the square cells out of shape; recombination smooths its quads.
+    // Plain smoothing would pull the square cells out of shape.
     refineFrontalQuads(tri, inside, sizes, metric, field);
+    smoothTriangulation(tri, inside, firstMovable, smoothingPasses, metric,
+                        SmoothingGuard::WorstQuality);
   } else if (algorithm2D != algorithm2d::kInitialMeshOnly) {
     (algorithm2D == algorithm2d::kDelaunay ? refineDelaunay : refineFrontal)(tri, inside, sizes,
                                                                              metric, field);

@@ -351,9 +351,10 @@ TEST(FrontalQuads, CurvedBoundaryAndHole) {
   }
   EXPECT_NEAR(testing::meshArea(mesh, 1), discPolygon - 0.24, 1e-9);
   EXPECT_GE(fractionNearSize(mesh, 1, uniform(0.05)), 0.97);
+  // Smoothing that never lowers the worst quality around a node mends where fronts meet.
   const QualityStats gamma = meshQuality(mesh, 2, QualityMeasure::Gamma);
-  EXPECT_GT(gamma.min, 0.3);
-  EXPECT_GT(gamma.mean, 0.8);
+  EXPECT_GT(gamma.min, 0.5);
+  EXPECT_GT(gamma.mean, 0.88);
 }
 
 // Every neighbour link goes both ways across the same two vertices.
