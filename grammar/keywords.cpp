@@ -34,8 +34,8 @@ constexpr std::string_view kTailWords[] = {
 // Attribute names inside DefineConstant[...] / DefineNumber[...] / DefineString[...].
 constexpr std::string_view kAttributeNames[] = {
     "AutoCheck", "ChangedValue", "Choices", "Closed", "Graph", "GmshOption", "Help",
-    "Highlight", "Kind", "Label", "Loop", "Max", "Min", "Name", "NeverChanged", "Path",
-    "ReadOnly", "ReadOnlyRange", "ServerAction", "Step", "Units", "Visible",
+    "Highlight", "Kind", "Label", "Loop", "Macro", "Max", "Min", "Name", "NeverChanged", "Path",
+    "ReadOnly", "ReadOnlyRange", "ServerAction", "ShortHelp", "Step", "Units", "Visible",
 };
 
 // Built-in functions: Gmsh reserves their names, so Name[args] calls them as Name(args) does.

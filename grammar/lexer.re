@@ -85,6 +85,9 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
     afterDot_ = false;
     return Parser::make_IDENT(std::move(text), where);
   }
+  // Inside DefineConstant[...], attribute names win over keywords (Macro "Gmsh", ...).
+  if (defineDepth_ > 0 && contains(attributeNames(), text) && !nextNonSpaceIs('('))
+    return Parser::make_ATTR(std::move(text), where);
   if (text == "For") return opening(Parser::make_FOR(where), text);
   if (text == "EndFor") return closing(Parser::make_ENDFOR(where));
   if (text == "In") return Parser::make_IN(where);
@@ -103,8 +106,6 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
     if (text == "DefineNumber") return Parser::make_DEFINENUMBER(where);
     return Parser::make_DEFINESTRING(where);
   }
-  if (defineDepth_ > 0 && contains(attributeNames(), text) && !nextNonSpaceIs('('))
-    return Parser::make_ATTR(std::move(text), where);
   if (contains(commandWords(), text)) return Parser::make_WORD(std::move(text), where);
   if (text == "Using" && followedByWord("Wire")) return Parser::make_USINGWIRE(where);
   if (contains(tailWords(), text)) return Parser::make_TAILWORD(std::move(text), where);

@@ -16,11 +16,29 @@ bool Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceL
   if (command.shape->parts.size() != 1 || command.shape->parts[0].isBlock)
     fail(where, "MeshSize takes point tags, as in MeshSize{1, 2} = 0.1;");
   std::vector<int> points;
-  for (double x : evaluateNumbers(command.shape->parts[0].items)) {
-    if (x != std::floor(x) || x <= 0)
-      fail(command.shape->loc, "point tag " + std::to_string(x) + " is not a positive integer");
-    points.push_back(static_cast<int>(x));
+  for (const auto& item : command.shape->parts[0].items) {
+    if (item->kind == ast::ExprKind::All) {  // MeshSize{:}: every point
+      const std::vector<int> all = allTags(0);
+      points.insert(points.end(), all.begin(), all.end());
+      continue;
+    }
+    for (double x : evaluateNumbers(*item)) {
+      if (x != std::floor(x) || x <= 0)
+        fail(item->loc, "point tag " + std::to_string(x) + " is not a positive integer");
+      points.push_back(static_cast<int>(x));
+    }
   }
+  // Like Gmsh, tags of no point are skipped (scripts often give a whole range of tags).
+  std::vector<int> missing;
+  std::erase_if(points, [&](int tag) {
+    if (session_.geo().hasPoint(tag)) return false;
+    missing.push_back(tag);
+    return true;
+  });
+  if (!missing.empty())
+    warn(where, "MeshSize: " + std::to_string(missing.size()) + " of the tags name no point (" +
+                    std::to_string(missing.front()) + (missing.size() > 1 ? ", ..." : "") +
+                    "); skipped");
   const double size = evaluateNumber(*command.value);
   if (!std::isfinite(size) || size < 0)
     fail(command.value->loc, "mesh size must be a finite number >= 0");

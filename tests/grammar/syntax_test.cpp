@@ -138,6 +138,19 @@ TEST(Parser, DefineConstantWithAndWithoutCommas) {
   EXPECT_EQ(define.constants[2].attributes[0].values.size(), 4u);
 }
 
+// Attribute names that are also keywords (Macro) are attributes inside DefineConstant.
+TEST(Parser, KeywordsAsDefineConstantAttributes) {
+  auto program = parse(
+      "DefineConstant[ m = {\"t.script\", Name \"Macros/Title\", Macro \"Gmsh\", AutoCheck 0},\n"
+      "  h = {1, ShortHelp \"h\"} ];\nMacro M\nReturn\n");
+  ASSERT_EQ(program.size(), 2u);
+  const auto& define = std::get<DefineConstantStmt>(program[0]->node);
+  ASSERT_EQ(define.constants.size(), 2u);
+  EXPECT_EQ(define.constants[0].attributes[1].name, "Macro");
+  EXPECT_EQ(define.constants[1].attributes[0].name, "ShortHelp");
+  EXPECT_EQ(std::get<MacroStmt>(program[1]->node).name, "M");
+}
+
 TEST(Parser, MissingSemicolonPointsAfterThePreviousToken) {
   EXPECT_EQ(syntaxError("a = 1\nb = 2;"), "1:6: expected ';' after '1' (found 'b')");
   EXPECT_EQ(syntaxError("Point(1) = {0, 0, 0}"),

@@ -18,6 +18,14 @@ TEST(MeshSize, SetsThePrescribedSizeOfPoints) {
   EXPECT_TRUE(run.log.warnings.empty());
 }
 
+TEST(MeshSize, AllPointsAtOnce) {
+  ScriptRun run;
+  run.run("Point(1) = {0, 0, 0, 0.1};\nPoint(4) = {1, 0, 0};\nMeshSize{:} = 0.2;\n");
+  run.session.synchronize();
+  EXPECT_EQ(run.session.model().point(1)->meshSize, 0.2);
+  EXPECT_EQ(run.session.model().point(4)->meshSize, 0.2);
+}
+
 TEST(MeshSize, RejectsBadTagsAndSizes) {
   EXPECT_NE(errorOf("Point(1) = {0, 0, 0};\nMeshSize{1.5} = 0.1;").find("test.geo:2:"),
             std::string::npos);
