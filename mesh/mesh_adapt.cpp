@@ -126,9 +126,9 @@ class MeshAdapter {
     double longest = 0;
   };
   Range range() const;
-  std::size_t splitLongEdges();
-  bool split(std::uint32_t corner);
-  std::size_t collapseShortEdges();
+  void splitLongEdges();
+  void split(std::uint32_t corner);
+  void collapseShortEdges();
   bool tryCollapse(std::uint32_t v, std::uint32_t w);
   void touch(std::uint32_t v) { touched_[v] = pass_; }
   // Whether v changed, or a neighbour of v moved, in this pass or the previous one: the
@@ -137,7 +137,7 @@ class MeshAdapter {
   void swapEdges();
   bool swapImproves(std::uint32_t corner) const;
   void smoothVertices();
-  bool smoothVertex(std::uint32_t v);
+  void smoothVertex(std::uint32_t v);
   double worstAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
   bool allPositiveAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
   PlanarMesh result() const;
@@ -184,16 +184,6 @@ double MeshAdapter::cappedByField(double size, Vec2 x) const {
   return f > 0 ? std::min(size, f) : size;
 }
 
-MeshAdapter::Range MeshAdapter::range() const {
-  Range r;
-  forEachFreeEdge([&](std::uint32_t a, std::uint32_t b) {
-    const double l = length(a, b);
-    r.outside += l > kSplitAbove || l < kCollapseBelow;
-    r.longest = std::max(r.longest, l);
-  });
-  return r;
-}
-
 // Calls f(a, b) for each free edge once.
 template <class F>
 void MeshAdapter::forEachFreeEdge(F f) const {
@@ -224,16 +214,24 @@ std::vector<Edge> MeshAdapter::edgesOutside(bool longOnes) const {
   return edges;
 }
 
-std::size_t MeshAdapter::splitLongEdges() {
-  std::size_t count = 0;
-  for (const Edge& e : edgesOutside(true)) {
-    const std::uint32_t c = mesh_.findEdge(e.a, e.b);
-    if (c != kNone && mesh_.kind(c) == EdgeKind::Free && split(c)) ++count;
-  }
-  return count;
+MeshAdapter::Range MeshAdapter::range() const {
+  Range r;
+  forEachFreeEdge([&](std::uint32_t a, std::uint32_t b) {
+    const double l = length(a, b);
+    r.outside += l > kSplitAbove || l < kCollapseBelow;
+    r.longest = std::max(r.longest, l);
+  });
+  return r;
 }
 
-bool MeshAdapter::split(std::uint32_t c) {
+void MeshAdapter::splitLongEdges() {
+  for (const Edge& e : edgesOutside(true)) {
+    const std::uint32_t c = mesh_.findEdge(e.a, e.b);
+    if (c != kNone && mesh_.kind(c) == EdgeKind::Free) split(c);
+  }
+}
+
+void MeshAdapter::split(std::uint32_t c) {
   const std::uint32_t x = mesh_.vertex(c), u = mesh_.vertex(nextCorner(c)),
                       w = mesh_.vertex(prevCorner(c)), y = mesh_.vertex(mesh_.neighbour(c));
   const Vec2 m = midpoint(mesh_.point(u), mesh_.point(w));
@@ -241,7 +239,7 @@ bool MeshAdapter::split(std::uint32_t c) {
   // Rounding may put the midpoint off the edge: every new triangle must stay positive.
   if (orient2d(px, pu, m) <= 0 || orient2d(px, m, pw) <= 0 || orient2d(py, pw, m) <= 0 ||
       orient2d(py, m, pu) <= 0)
-    return false;
+    return;
   const std::uint32_t v = mesh_.addPoint(m);
   extended_.push_back(0);
   target_.push_back(0);
@@ -251,16 +249,13 @@ bool MeshAdapter::split(std::uint32_t c) {
   updateSize(v);
   mesh_.split(c, v);
   for (std::uint32_t changed : {x, u, w, y, v}) touch(changed);
-  return true;
 }
 
-std::size_t MeshAdapter::collapseShortEdges() {
-  std::size_t count = 0;
+void MeshAdapter::collapseShortEdges() {
   for (const Edge& e : edgesOutside(false)) {
     if (!mesh_.inMesh(e.a) || !mesh_.inMesh(e.b) || mesh_.findEdge(e.a, e.b) == kNone) continue;
-    if (tryCollapse(e.a, e.b) || tryCollapse(e.b, e.a)) ++count;
+    if (!tryCollapse(e.a, e.b)) tryCollapse(e.b, e.a);
   }
-  return count;
 }
 
 // Merges v into w if v may move, the result is a valid triangulation (the link condition:
@@ -332,8 +327,8 @@ void MeshAdapter::smoothVertices() {
 
 // Moves v towards the centroid of its neighbours, as far as keeps every triangle around it
 // positive and the worst of them no worse.
-bool MeshAdapter::smoothVertex(std::uint32_t v) {
-  if (!mesh_.ring(v, ring_)) return false;
+void MeshAdapter::smoothVertex(std::uint32_t v) {
+  if (!mesh_.ring(v, ring_)) return;
   double su = 0, sv = 0, worst = 1;
   for (std::uint32_t c : ring_) {
     const Vec2 p = mesh_.point(mesh_.vertex(nextCorner(c)));
@@ -352,10 +347,9 @@ bool MeshAdapter::smoothVertex(std::uint32_t v) {
         touch(v);
         for (std::uint32_t c : ring_) touch(mesh_.vertex(nextCorner(c)));
       }
-      return true;
+      return;
     }
   }
-  return false;
 }
 
 // The worst quality of the triangles of `ring` with their common vertex at p.
