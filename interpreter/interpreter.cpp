@@ -152,9 +152,10 @@ void Interpreter::defineMacro(const ast::MacroStmt& macro, const SourceLocation&
 
 void Interpreter::executeCall(const ast::CallStmt& call, const SourceLocation& where) {
   const ast::Expr& expr = *call.name;
+  // Call Name; names the macro itself, even when a variable is called Name too (as in Gmsh);
+  // a string expression gives the name otherwise: Call "Name"; Call StrCat("Na", "me");
   std::string name;
-  if (expr.kind == ast::ExprKind::Variable && expr.name.suffixes.empty() &&
-      !variables_.contains(expr.name.base))
+  if (expr.kind == ast::ExprKind::Variable && expr.name.suffixes.empty())
     name = expr.name.base;
   else
     name = evaluateString(expr);

@@ -32,6 +32,15 @@ TEST(ControlFlow, MacrosAndCalls) {
   EXPECT_EQ(printed("Function F\n  r = 2 * x;\nReturn\nx = 4; Call F; Printf(\"%g\", r);"), "8\n");
 }
 
+// As in Gmsh, Call Name; means the macro Name even when a variable holds another name.
+TEST(ControlFlow, CallByNameIgnoresVariables) {
+  EXPECT_EQ(printed("Macro A\n Printf(\"A\");\nReturn\nMacro B\n Printf(\"B\");\nReturn\n"
+                    "A = \"B\";\nCall A;\nwhich = \"B\";\nCall StrCat(which);\n"),
+            "A\nB\n");
+  EXPECT_EQ(firstLineOf("Macro B\nReturn\nname = \"B\";\nCall name;\n"),
+            "test.geo:4:6: error: unknown macro 'name'");
+}
+
 TEST(ControlFlow, UnknownMacroIsAnError) {
   EXPECT_EQ(firstLineOf("Macro Add\nReturn\nCall Ad;"),
             "test.geo:3:6: error: unknown macro 'Ad'; did you mean 'Add'?");
