@@ -9,6 +9,7 @@
 #include "interpreter/session.h"
 #include "kernel/geo/geo_unrolled_writer.h"
 #include "mesh/generate.h"
+#include "mesh/io/msh_reader.h"
 #include "mesh/io/msh_writer.h"
 
 namespace geomesh {
@@ -80,6 +81,15 @@ bool Interpreter::executeModelCommand(const ast::CommandStmt& command,
   return false;
 }
 
+// Synchronizes the model, reporting at `where` what prevents it.
+void Interpreter::synchronizeModel(const SourceLocation& where) {
+  try {
+    session_.synchronize();
+  } catch (const std::runtime_error& error) {
+    fail(where, error.what());
+  }
+}
+
 void Interpreter::startNewModel() {
   session_.clearModel();
   deletedPhysicalTag_ = 0;
@@ -95,6 +105,8 @@ void Interpreter::meshNow(const ast::Expr& dimension, const SourceLocation& wher
   } catch (const MeshError& error) {
     // Point at the statement that defined the entity when the script did, else at Mesh.
     fail(session_.origin(error.entity).value_or(where), error.what());
+  } catch (const std::runtime_error& error) {
+    fail(where, error.what());
   }
 }
 
@@ -109,7 +121,7 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   bool written = false;
   if (ext == ".msh") {
     // Nothing meshed yet: the file still lists the entities, as Gmsh's does.
-    if (session_.mesh().nodeCount() == 0) session_.synchronize();
+    if (session_.mesh().nodeCount() == 0) synchronizeModel(where);
     const MshWriteOptions options = mshOptions(session_.options());
     written = writeFileAtomically(path, [&](std::ostream& out) {
       writeMsh(out, session_.model(), session_.mesh(), options);
@@ -134,12 +146,33 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   session_.log().info("Wrote '" + shown + "'");
 }
 
-// Merge "file.geo"; reads the script as Include does. Meshes and other data files are not
-// merged into a scripted model.
+// Merge "file.geo"; reads the script as Include does. Merge "file.msh"; reads a mesh, as
+// long as the script has no geometry of its own; other files are not merged.
 void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocation& where) {
-  const std::string file = evaluateString(*command.args[0]);
-  if (extensionOf(file) == ".geo") return executeInclude(command, where);
-  warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo scripts are merged); ignored");
+  const ast::Expr& name = *command.args[0];
+  const std::string file = evaluateString(name);
+  const std::string ext = extensionOf(file);
+  if (ext == ".geo") return executeInclude(command, where);
+  if (ext != ".msh") {
+    warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo and .msh); ignored");
+    return;
+  }
+  if (session_.hasGeometry() || session_.meshFromFile()) {
+    warn(where, "'Merge' of '" + file + "' into a model that already has " +
+                    (session_.meshFromFile() ? "a mesh file" : "geometry") +
+                    " is not supported yet; ignored");
+    return;
+  }
+  std::filesystem::path path = file;
+  if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
+  const std::string shown = path.lexically_normal().string();
+  try {
+    session_.readMesh(shown);
+  } catch (const MshReadError& error) {
+    fail(name.loc, error.what());
+  }
+  session_.log().info("Merged '" + shown + "': " + std::to_string(session_.mesh().nodeCount()) +
+                      " nodes");
 }
 
 // Delete Model; Delete All; Delete Variables; Delete Options; Delete name;

@@ -105,6 +105,7 @@ class Interpreter {
   bool executeModelCommand(const ast::CommandStmt& command, const SourceLocation& where);
   void meshNow(const ast::Expr& dimension, const SourceLocation& where);
   void startNewModel();
+  void synchronizeModel(const SourceLocation& where);
   void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <iostream>
+#include <stdexcept>
 
 #include "interpreter/interpreter.h"
 #include "mesh/generate.h"
+#include "mesh/io/msh_reader.h"
 
 namespace geomesh {
 
@@ -20,7 +22,26 @@ void Session::runText(const std::string& text, const std::string& fileName) {
   runScriptText(*this, text, fileName);
 }
 
-void Session::synchronize() { geo_.synchronize(model_); }
+void Session::synchronize() {
+  if (!meshFromFile_) {
+    geo_.synchronize(model_);
+    return;
+  }
+  if (hasGeometry())
+    throw std::runtime_error(
+        "the script defines geometry besides a merged mesh file: mixing both is not supported yet");
+}
+
+bool Session::hasGeometry() const {
+  for (int dim = 0; dim <= 3; ++dim)
+    if (geo_.maxTag(dim) > 0) return true;
+  return false;
+}
+
+void Session::readMesh(const std::string& path) {
+  readMshFile(path, model_, mesh_);
+  meshFromFile_ = true;
+}
 
 MeshOptions Session::meshOptions() const {
   MeshOptions m;
@@ -44,6 +65,10 @@ MeshOptions Session::meshOptions() const {
 
 void Session::generate(int dim) {
   synchronize();
+  if (meshFromFile_) {
+    log_.info("Keeping the mesh read from file: it has no geometry to mesh again");
+    return;
+  }
   generateMesh(model_, meshOptions(), dim, mesh_, log_);
 }
 
@@ -52,6 +77,7 @@ void Session::clearModel() {
   model_ = Model();
   mesh_ = Mesh();
   origins_.clear();
+  meshFromFile_ = false;
 }
 
 void Session::recordOrigin(EntityId entity, const SourceLocation& where) {

@@ -57,6 +57,13 @@ class Session {
   void generate(int dim);
   // Forgets every entity, mesh constraint and mesh element (Delete Model; NewModel;).
   void clearModel();
+  // Replaces the model and the mesh by those of an MSH file (Merge "f.msh"; in a script).
+  // The mesh is then kept as read: meshing leaves it alone, and defining geometry besides
+  // is refused when the model is next synchronized. Throws MshReadError.
+  void readMesh(const std::string& path);
+  bool meshFromFile() const { return meshFromFile_; }
+  // Whether the built-in factory holds any entity.
+  bool hasGeometry() const;
 
   // Where the script defined a curve, surface or volume, so that a failure met later (while
   // meshing) can point at the statement. Null when unknown.
@@ -80,6 +87,7 @@ class Session {
   std::vector<std::string> originFiles_;
   std::uint32_t lastOriginFile_ = 0;
   bool systemCallsAllowed_ = false;
+  bool meshFromFile_ = false;
 };
 
 }  // namespace geomesh

@@ -132,11 +132,46 @@ TEST_F(ModelCommands, MergeReadsAScriptLikeInclude) {
             "in part\nb=2\n");
 }
 
-TEST_F(ModelCommands, MergeOfAMeshWarns) {
+TEST_F(ModelCommands, MergeReadsAMeshThatMeshingThenKeeps) {
+  {
+    ScriptRun first;
+    runMain(first, std::string(kUnitSquare) + "Mesh 2;\nSave \"square.msh\";\n");
+  }
   ScriptRun run;
-  runMain(run, "Merge \"other.msh\";\n");
+  runMain(run, "Merge \"square.msh\";\nMesh 2;\nSave \"copy.msh\";\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  EXPECT_GT(run.session.mesh().elementCount(2), 20u);
+  EXPECT_NEAR(triangleArea(run.session.mesh()), 1.0, 1e-12);
+  Model model;
+  Mesh mesh;
+  readMshFile((dir_ / "copy.msh").string(), model, mesh);
+  EXPECT_EQ(mesh.nodeCount(), run.session.mesh().nodeCount());
+  EXPECT_EQ(mesh.elementCount(2), run.session.mesh().elementCount(2));
+}
+
+TEST_F(ModelCommands, MergeOfAMeshBesideGeometryIsRefused) {
+  {
+    ScriptRun first;
+    runMain(first, std::string(kUnitSquare) + "Mesh 2;\nSave \"square.msh\";\n");
+  }
+  ScriptRun before;
+  runMain(before, "Point(1) = {0, 0, 0};\nMerge \"square.msh\";\n");
+  ASSERT_EQ(before.log.warnings.size(), 1u);
+  EXPECT_NE(before.log.warnings[0].find("already has geometry"), std::string::npos);
+  EXPECT_EQ(before.session.mesh().nodeCount(), 0u);
+  ScriptRun after;
+  EXPECT_THROW(runMain(after, "Merge \"square.msh\";\nPoint(1) = {0, 0, 0};\nMesh 2;\n"),
+               ScriptError);
+}
+
+TEST_F(ModelCommands, MergeOfOtherFilesWarnsAndMissingMeshesFail) {
+  ScriptRun run;
+  runMain(run, "Merge \"surface.stl\";\n");
   ASSERT_EQ(run.log.warnings.size(), 1u);
-  EXPECT_NE(run.log.warnings[0].find("'Merge' of 'other.msh'"), std::string::npos);
+  EXPECT_NE(run.log.warnings[0].find("'Merge' of 'surface.stl' is not supported yet"),
+            std::string::npos);
+  ScriptRun missing;
+  EXPECT_THROW(runMain(missing, "Merge \"nothing.msh\";\n"), ScriptError);
 }
 
 TEST_F(ModelCommands, DeleteModelAndNewModelStartAfresh) {

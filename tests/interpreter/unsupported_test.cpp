@@ -16,7 +16,7 @@ constexpr const char* kStatements[] = {
     "Save \"x.png\";",
     "RefineMesh;",
     "SetOrder 2;",
-    "Merge \"whatever.msh\";",
+    "Merge \"whatever.stl\";",
     "SetFactory(\"OpenCASCADE\");",
     "Box(11) = {0, 0, 0, 1, 1, 1};",
     "v() = BooleanUnion{ Volume{10}; Delete; }{ Volume{11}; Delete; };",
