@@ -214,7 +214,10 @@ int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   if (!cl.dimension) {
     session.synchronize();
     log.info("Geometry: " + describeModel(session.model()));
-    log.info("Nothing meshed: give -1, -2 or -3 to mesh, -0 to check the geometry");
+    if (session.mesh().nodeCount() > 0)
+      log.info("The script meshed (Mesh n): only its Save statements write files");
+    else
+      log.info("Nothing meshed: give -1, -2 or -3 to mesh, -0 to check the geometry");
     return 0;
   }
   meshAndWrite(cl, session, log);

@@ -72,7 +72,7 @@ void Interpreter::addStructMembers(StructData& data, const ast::Expr& definition
     } else {
       value = Value::number(enumerating ? ++data.enumValue : 1);
     }
-    if (member.name == "Tag" && !value.isScalar())
+    if (member.name == "Tag" && value.kind() != Value::Kind::Number)
       fail(member.loc, "the Tag of a Struct is a number");
     data.members.emplace(member.name, std::move(value));  // the first definition stays
   }
