@@ -201,6 +201,7 @@ Value Interpreter::optionValue(const ast::Expr& expr) {
     fail(expr.loc, "unknown option '" + expr.text + "'" +
                        didYouMean(expr.text, options.suggestions(expr.text)));
   if (option->type == OptionType::String) return Value::string(option->text);
+  if (auto statistic = modelStatistic(option->name)) return Value::number(*statistic);
   return Value::number(option->number);
 }
 

@@ -1,6 +1,8 @@
 // Statements that act on the whole model or its mesh while the script runs: Mesh n; Save and
 // Print "file"; Merge "file"; Delete Model / All / Variables / Options / <name>; NewModel;
 // SyncModel.
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -198,6 +200,47 @@ bool Interpreter::deleteByName(const ast::Expr& what, const SourceLocation& wher
   if (variables_.erase(name) == 0)
     warn(where, "'Delete " + name + "': no variable '" + name + "' to delete; ignored");
   return true;
+}
+
+// Read-only options describing the model and its mesh, computed when a script reads them:
+// General.MinX ... General.MaxZ and General.BoundingBoxSize, Mesh.NbNodes, Mesh.NbTriangles,
+// ... Null for any other option.
+std::optional<double> Interpreter::modelStatistic(std::string_view name) {
+  static constexpr std::pair<std::string_view, std::array<ElementType, 3>> kFamilies[] = {
+      {"Mesh.NbTriangles", {ElementType::Triangle3, ElementType::Triangle6, ElementType::Triangle6}},
+      {"Mesh.NbQuadrangles", {ElementType::Quad4, ElementType::Quad8, ElementType::Quad9}},
+      {"Mesh.NbTetrahedra", {ElementType::Tet4, ElementType::Tet10, ElementType::Tet10}},
+      {"Mesh.NbHexahedra", {ElementType::Hex8, ElementType::Hex20, ElementType::Hex27}},
+      {"Mesh.NbPrisms", {ElementType::Prism6, ElementType::Prism15, ElementType::Prism18}},
+      {"Mesh.NbPyramids", {ElementType::Pyramid5, ElementType::Pyramid13, ElementType::Pyramid14}},
+  };
+  const Mesh& mesh = session_.mesh();
+  if (name == "Mesh.NbNodes") return static_cast<double>(mesh.nodeCount());
+  for (const auto& [option, types] : kFamilies) {
+    if (name != option) continue;
+    double count = 0;
+    for (const auto& [entity, part] : mesh.entities())
+      for (const auto& block : part.blocks)
+        if (std::find(types.begin(), types.end(), block.type) != types.end())
+          count += static_cast<double>(block.size());
+    return count;
+  }
+  constexpr std::string_view kBounds[] = {"General.MinX", "General.MinY", "General.MinZ",
+                                          "General.MaxX", "General.MaxY", "General.MaxZ",
+                                          "General.BoundingBoxSize"};
+  const auto found = std::find(std::begin(kBounds), std::end(kBounds), name);
+  if (found == std::end(kBounds)) return std::nullopt;
+  const auto which = static_cast<std::size_t>(found - std::begin(kBounds));
+  try {
+    session_.synchronize();
+  } catch (const std::runtime_error&) {
+    return std::nullopt;  // no valid model yet: the option keeps its value
+  }
+  const BoundingBox box = session_.model().boundingBox();
+  if (box.empty()) return std::nullopt;
+  const double corner[] = {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z};
+  if (which < 6) return corner[which];
+  return distance(box.min, box.max);
 }
 
 }  // namespace geomesh

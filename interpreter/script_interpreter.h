@@ -106,6 +106,7 @@ class Interpreter {
   void meshNow(const ast::Expr& dimension, const SourceLocation& where);
   void startNewModel();
   void synchronizeModel(const SourceLocation& where);
+  std::optional<double> modelStatistic(std::string_view name);
   void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);

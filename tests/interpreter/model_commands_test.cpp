@@ -74,6 +74,21 @@ Printf("meshed");
   EXPECT_NEAR(triangleArea(mesh), 1.0, 1e-12);
 }
 
+// Read-only options follow the model and the mesh, as in Gmsh.
+TEST_F(ModelCommands, StatisticsOptionsDescribeTheModelAndTheMesh) {
+  ScriptRun run;
+  const std::string out = runMain(run, std::string(kUnitSquare) + R"(
+Printf("%g %g | %g %g %g %g %.6g", Mesh.NbNodes, Mesh.NbTriangles, General.MinX, General.MaxX,
+       General.MinY, General.MaxY, General.BoundingBoxSize);
+Mesh 2;
+Printf("%g %g %g", Mesh.NbNodes, Mesh.NbTriangles, Mesh.NbQuadrangles);
+)");
+  const auto triangles = run.session.mesh().elementCount(2);
+  EXPECT_EQ(out, "0 0 | 0 1 0 1 1.41421\n" + std::to_string(run.session.mesh().nodeCount()) + " " +
+                     std::to_string(triangles) + " 0\n");
+  EXPECT_GT(triangles, 20u);
+}
+
 TEST_F(ModelCommands, MeshTakesADimensionFromZeroToThree) {
   ScriptRun run;
   EXPECT_THROW(runMain(run, std::string(kUnitSquare) + "Mesh 4;"), ScriptError);

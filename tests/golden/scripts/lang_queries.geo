@@ -30,3 +30,5 @@ Line(newl) = {2, 6};
 Printf("after adding: point %g, curve %g, loop %g", newp, newl, newll);
 all[] = Point{:};
 Printf("all points: %g", #all[]);
+Printf("model box x %g..%g, y %g..%g, diagonal %.6g", General.MinX, General.MaxX, General.MinY,
+       General.MaxY, General.BoundingBoxSize);
