@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
@@ -30,16 +31,23 @@ MshWriteOptions mshOptions(const OptionRegistry& options) {
   return w;
 }
 
-// Writes through a temporary file renamed into place, so a failure leaves nothing behind.
+// Writes through a temporary file renamed into place, so a failure (false, or an exception
+// from `write`) leaves nothing behind.
 template <class Write>
 bool writeFileAtomically(const std::filesystem::path& path, Write write) {
   const std::filesystem::path partial = path.string() + ".partial";
+  std::error_code ignored;
   {
     std::ofstream out(partial, std::ios::binary);
-    if (out) write(out);
+    try {
+      if (out) write(out);
+    } catch (...) {
+      out.close();
+      std::filesystem::remove(partial, ignored);
+      throw;
+    }
     out.close();
     if (!out) {
-      std::error_code ignored;
       std::filesystem::remove(partial, ignored);
       return false;
     }
@@ -120,29 +128,35 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
   const std::string ext = extensionOf(path);
   const std::string shown = path.lexically_normal().string();
-  bool written = false;
+  std::function<void(std::ostream&)> write;
   if (ext == ".msh") {
     // Nothing meshed yet: the file still lists the entities, as Gmsh's does.
     if (session_.mesh().nodeCount() == 0) synchronizeModel(where);
     const MshWriteOptions options = mshOptions(session_.options());
-    written = writeFileAtomically(path, [&](std::ostream& out) {
+    write = [this, options](std::ostream& out) {
       writeMsh(out, session_.model(), session_.mesh(), options);
-    });
+    };
   } else if (ext == ".opt") {
-    written = writeFileAtomically(path, [&](std::ostream& out) {
+    write = [this](std::ostream& out) {
       for (const auto& option : session_.options().all())
         if (option.number != option.defaultNumber || option.text != option.defaultText)
           out << optionListingLine(option) << '\n';
-    });
+    };
   } else if (ext == ".geo_unrolled") {
-    written = writeFileAtomically(path, [&](std::ostream& out) {
+    write = [this](std::ostream& out) {
       writeUnrolledGeo(session_.geo(), out,
                        meshConstraintHooks(session_.model().meshConstraints()));
-    });
+    };
   } else {
     warn(where, "'" + command.words[0] + "' cannot write '" + shown + "': this format is not " +
                     "supported yet (only .msh, .opt and .geo_unrolled); ignored");
     return;
+  }
+  bool written = false;
+  try {
+    written = writeFileAtomically(path, write);
+  } catch (const std::exception& error) {
+    fail(name.loc, "cannot write '" + shown + "': " + error.what());
   }
   if (!written) fail(name.loc, "cannot write '" + shown + "'");
   session_.log().info("Wrote '" + shown + "'");

@@ -107,6 +107,18 @@ TEST_F(ModelCommands, SaveWritesTheMeshNextToTheScript) {
   EXPECT_FALSE(fs::exists(dir_ / "out.msh.partial"));
 }
 
+TEST_F(ModelCommands, SaveIntoAMissingDirectoryIsALocatedError) {
+  ScriptRun run;
+  try {
+    runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"no/such/dir/out.msh\";\n");
+    FAIL() << "no error";
+  } catch (const ScriptError& error) {
+    EXPECT_EQ(error.location().line, 7);
+    EXPECT_NE(error.message().find("cannot write"), std::string::npos) << error.message();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "no"));
+}
+
 TEST_F(ModelCommands, SaveFollowsTheMshVersionOption) {
   ScriptRun run;
   runMain(run, std::string(kUnitSquare) +
