@@ -86,6 +86,13 @@ bool Interpreter::executeModelCommand(const ast::CommandStmt& command,
     // Written meshes are always numbered consecutively from 1: nothing to renumber.
     return true;
   }
+  if (w == std::vector<std::string>{"Coherence", "Mesh"} && command.args.empty()) {
+    // A generated mesh shares the nodes of common boundaries: there are no duplicates to
+    // merge. A mesh read from a file keeps whatever it holds.
+    if (session_.meshFromFile())
+      warn(where, "'Coherence Mesh' on a mesh read from a file is not supported yet; ignored");
+    return true;
+  }
   if (w.size() == 1 && w[0] == "Delete" && bare && !command.shape)
     return deleteByName(*command.args[0], where);
   return false;

@@ -89,6 +89,16 @@ Printf("%g %g %g", Mesh.NbNodes, Mesh.NbTriangles, Mesh.NbQuadrangles);
   EXPECT_GT(triangles, 20u);
 }
 
+// A generated mesh has no duplicate nodes: Coherence Mesh keeps it as it is.
+TEST_F(ModelCommands, CoherenceMeshOnAGeneratedMesh) {
+  ScriptRun run;
+  const std::string out = runMain(
+      run, std::string(kUnitSquare) + "Mesh 2;\nn = Mesh.NbNodes;\nCoherence Mesh;\n"
+                                      "Printf(\"%g\", Mesh.NbNodes - n);\n");
+  EXPECT_EQ(out, "0\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+}
+
 TEST_F(ModelCommands, MeshTakesADimensionFromZeroToThree) {
   ScriptRun run;
   EXPECT_THROW(runMain(run, std::string(kUnitSquare) + "Mesh 4;"), ScriptError);
