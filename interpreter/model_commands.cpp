@@ -169,15 +169,18 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   session_.log().info("Wrote '" + shown + "'");
 }
 
-// Merge "file.geo"; reads the script as Include does. Merge "file.msh"; reads a mesh, as
-// long as the script has no geometry of its own; other files are not merged.
+// Merge "file.geo"; reads the script as Include does (so do .opt and .geo_unrolled files,
+// which are scripts too). Merge "file.msh"; reads a mesh, as long as the script has no
+// geometry of its own; other files are not merged.
 void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocation& where) {
   const ast::Expr& name = *command.args[0];
   const std::string file = evaluateString(name);
   const std::string ext = extensionOf(file);
-  if (ext == ".geo") return executeInclude(command, where);
+  if (ext == ".geo" || ext == ".opt" || ext == ".geo_unrolled")
+    return executeInclude(command, where);
   if (ext != ".msh") {
-    warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo and .msh); ignored");
+    warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo, .opt, " +
+                    ".geo_unrolled and .msh); ignored");
     return;
   }
   if (session_.hasGeometry() || session_.meshFromFile()) {

@@ -169,6 +169,21 @@ TEST_F(ModelCommands, MergeReadsAScriptLikeInclude) {
             "in part\nb=2\n");
 }
 
+TEST_F(ModelCommands, MergeReadsOptionFilesAndUnrolledGeometry) {
+  std::ofstream(dir_ / "o.opt") << "Mesh.MeshSizeMax = 0.3;\nGeometry.Tolerance = 1e-5;\n";
+  ScriptRun run;
+  EXPECT_EQ(runMain(run, R"(
+Merge "o.opt";
+Printf("%g %g", Mesh.MeshSizeMax, Geometry.Tolerance);
+Point(1) = {0, 0, 0};
+Save "u.geo_unrolled";
+Delete Model;
+Merge "u.geo_unrolled";
+Printf("%g", newp);
+)"),
+            "0.3 1e-05\n2\n");
+}
+
 TEST_F(ModelCommands, MergeReadsAMeshThatMeshingThenKeeps) {
   {
     ScriptRun first;
