@@ -138,8 +138,10 @@ struct_append:
     if ($2 != "Append") throw SyntaxError(at(@2), "expected '(Append)' after the Struct name");
     $$ = std::move($2); }
 ;
-struct_members: struct_member { $$.push_back(std::move($1)); }
-              | struct_members ',' struct_member { $$ = std::move($1); $$.push_back(std::move($3)); } ;
+struct_members:
+  struct_member { $$.push_back(std::move($1)); }
+| struct_members ',' struct_member { $$ = std::move($1); $$.push_back(std::move($3)); }
+;
 struct_member:
   member_name { $$.name = std::move($1); $$.loc = at(@1); }
 | member_name expr { $$.name = std::move($1); $$.loc = at(@1); $$.values.push_back(std::move($2)); }

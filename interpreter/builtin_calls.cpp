@@ -154,9 +154,10 @@ std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
     if (args.size() != 2) fail(call.loc, "GetValue takes a prompt and a default value");
     const std::string prompt = evaluateString(*args[0]);
     const double answer = evaluateNumber(*args[1]);
-    if (session_.options().number("General.Verbosity") >= 3)
-      session_.out() << prompt << " (default=" << formatPrintf("%g", std::vector<FormatArgument>{answer})
-                     << "): ";
+    if (session_.options().number("General.Verbosity") >= 3) {
+      const std::vector<FormatArgument> shown{answer};
+      session_.out() << prompt << " (default=" << formatPrintf("%g", shown) << "): ";
+    }
     return Value::number(answer);
   }
   return std::nullopt;

@@ -37,8 +37,10 @@ void runScriptText(Session& session, const std::string& text, const std::string&
 // Values given by -setnumber / -setstring are variables before the script starts: the
 // script reads them directly, and DefineConstant leaves them as they are.
 Interpreter::Interpreter(Session& session) : session_(session) {
-  for (const auto& [name, value] : session.numberOverrides()) variables_[name] = Value::number(value);
-  for (const auto& [name, value] : session.stringOverrides()) variables_[name] = Value::string(value);
+  for (const auto& [name, value] : session.numberOverrides())
+    variables_[name] = Value::number(value);
+  for (const auto& [name, value] : session.stringOverrides())
+    variables_[name] = Value::string(value);
 }
 
 void Interpreter::runFile(const std::string& path) {

@@ -25,7 +25,8 @@ const Expr& assignedValue(const StmtList& program, std::size_t i = 0) {
 }
 
 TEST(StructSyntax, DefinitionWithNamespaceAppendAndMembers) {
-  auto program = parse("Struct NS::Mat (Append) [ Tag 3, epsr 5, mu {1, 2}, label \"iron\", Enum, A ];");
+  auto program =
+      parse("Struct NS::Mat (Append) [ Tag 3, epsr 5, mu {1, 2}, label \"iron\", Enum, A ];");
   ASSERT_EQ(program.size(), 1u);
   const auto& command = std::get<CommandStmt>(program[0]->node);
   ASSERT_EQ(command.words, std::vector<std::string>{"Struct"});
@@ -80,7 +81,8 @@ TEST(StructSyntax, StructsNamedByStringsAndByIndex) {
 }
 
 TEST(StructSyntax, MisspelledAppendAndTrailingComma) {
-  EXPECT_EQ(syntaxError("Struct M (Apend) [ x 1 ];"), "1:11: expected '(Append)' after the Struct name");
+  EXPECT_EQ(syntaxError("Struct M (Apend) [ x 1 ];"),
+            "1:11: expected '(Append)' after the Struct name");
   EXPECT_NE(syntaxError("Struct M [ x 1, ];"), "");
   EXPECT_NE(syntaxError("Struct M;"), "");
 }

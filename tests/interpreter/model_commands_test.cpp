@@ -258,8 +258,9 @@ Printf("%g %g", Exists(x), Exists(y));
 
 TEST_F(ModelCommands, DeleteOptionsRestoresTheDefaults) {
   ScriptRun run;
-  EXPECT_EQ(runMain(run, "Mesh.MeshSizeMax = 3;\nDelete Options;\nPrintf(\"%g\", Mesh.MeshSizeMax);\n"),
-            "1e+22\n");
+  EXPECT_EQ(
+      runMain(run, "Mesh.MeshSizeMax = 3;\nDelete Options;\nPrintf(\"%g\", Mesh.MeshSizeMax);\n"),
+      "1e+22\n");
 }
 
 // Script output is a "direct" message: at verbosity 2 and below it is not shown, but Printf

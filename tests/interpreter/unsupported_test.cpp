@@ -44,7 +44,8 @@ TEST(Unsupported, WarningsNameTheStatement) {
   ASSERT_EQ(run.log.warnings.size(), 2u);
   EXPECT_EQ(run.log.warnings[0],
             "test.geo:1:1: warning: 'Point In Volume' is not supported yet; ignored");
-  EXPECT_EQ(run.log.warnings[1], "test.geo:2:1: warning: 'RefineMesh' is not supported yet; ignored");
+  EXPECT_EQ(run.log.warnings[1],
+            "test.geo:2:1: warning: 'RefineMesh' is not supported yet; ignored");
 }
 
 TEST(Unsupported, AStatementInALoopWarnsOnce) {
