@@ -8,6 +8,7 @@
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
 #include "interpreter/session.h"
+#include "stdlib/colors.h"
 
 namespace geomesh {
 
@@ -162,8 +163,14 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
   }
   const ast::Expr& rhs = *assign.value;
   if (option->type == OptionType::Color && rhs.kind == ast::ExprKind::Variable &&
-      !variables_.contains(rhs.name.base)) {
-    session_.log().debug("colour names are ignored in batch mode");
+      rhs.name.suffixes.empty() && !variables_.contains(rhs.name.base)) {
+    // A colour name: Mesh.Color.Triangles = LightBlue;
+    if (auto color = namedColor(rhs.name.base)) {
+      options.setNumber(assign.path, *color);
+      return;
+    }
+    warn(rhs.loc, "unknown colour '" + rhs.name.base + "'; ignored" +
+                      didYouMean(rhs.name.base, colorNames()));
     return;
   }
   Value value = evaluate(rhs);

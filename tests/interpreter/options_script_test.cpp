@@ -34,6 +34,19 @@ TEST(ScriptOptions, StringsAndColours) {
   EXPECT_EQ(run.session.options().number("General.Color.Background"), 255 * 65536);
 }
 
+// Colour names are X11's, one capitalized word per part, and case matters (as in Gmsh).
+TEST(ScriptOptions, ColourNames) {
+  ScriptRun run;
+  run.run("Mesh.Color.Triangles = LightBlue;\nGeometry.Color.Points = Gray50;\n"
+          "Mesh.Color.Lines = lightblue;\n");
+  EXPECT_EQ(run.session.options().number("Mesh.Color.Triangles"), 173 * 65536 + 216 * 256 + 230);
+  EXPECT_EQ(run.session.options().number("Geometry.Color.Points"), 127 * 65536 + 127 * 256 + 127);
+  EXPECT_EQ(run.session.options().number("Mesh.Color.Lines"), 0);
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_EQ(run.log.warnings[0], "test.geo:3:20: warning: unknown colour 'lightblue'; ignored; "
+                                 "did you mean 'LightBlue'?");
+}
+
 TEST(ScriptOptions, SettingAnUnknownOptionWarnsWithTheClosest) {
   ScriptRun run;
   run.run("Mesh.MeshSizeMn = 1;\nPrintf(\"on\");");

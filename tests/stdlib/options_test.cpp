@@ -4,6 +4,7 @@
 #include <string>
 #include <tuple>
 
+#include "stdlib/colors.h"
 #include "stdlib/options.h"
 
 namespace geomesh {
@@ -102,6 +103,16 @@ TEST(OptionRegistry, StringsAndColours) {
   EXPECT_EQ(options.string("Geometry.OCCTargetUnit"), "M");
   EXPECT_EQ(options.find("General.Color.Background")->type, OptionType::Color);
   EXPECT_TRUE(options.hasNumber("General.Color.Background"));
+}
+
+TEST(Colours, X11NamesAsScriptsWriteThem) {
+  EXPECT_EQ(namedColor("Red"), 255 * 65536.0);
+  EXPECT_EQ(namedColor("NavyBlue"), 128.0);
+  EXPECT_EQ(namedColor("Gray"), 190 * 65793.0);
+  EXPECT_EQ(namedColor("DarkOliveGreen3"), 162 * 65536.0 + 205 * 256 + 90);
+  EXPECT_FALSE(namedColor("red"));
+  EXPECT_FALSE(namedColor("Navy Blue"));
+  EXPECT_GT(colorNames().size(), 600u);
 }
 
 TEST(OptionRegistry, SuggestsCloseNames) {
