@@ -33,7 +33,11 @@ TEST(OptionRegistry, RequiredDefaults) {
 TEST(OptionRegistry, EveryOptionHasHelpAndCoversTheThreeCategories) {
   OptionRegistry options;
   EXPECT_GT(options.all().size(), 500u);
-  for (const auto& option : options.all()) EXPECT_FALSE(option.help.empty()) << option.name;
+  for (const auto& option : options.all()) {
+    EXPECT_FALSE(option.help.empty()) << option.name;
+    // A help line says what the option does, not just its name again.
+    EXPECT_EQ(option.help.find(" setting: "), std::string::npos) << option.name;
+  }
   EXPECT_TRUE(options.hasString("General.DefaultFileName"));
   EXPECT_TRUE(options.hasNumber("Geometry.OldNewReg"));
 }
