@@ -59,6 +59,9 @@ MeshOptions Session::meshOptions() const {
   m.randomFactor = o.number("Mesh.RandomFactor");
   m.recombineAll = o.number("Mesh.RecombineAll") != 0;
   m.recombinationAlgorithm = static_cast<int>(o.number("Mesh.RecombinationAlgorithm"));
+  m.sizeFromCurvature = o.number("Mesh.MeshSizeFromCurvature");
+  m.minCircleNodes = static_cast<int>(o.number("Mesh.MinimumCircleNodes"));
+  m.minCurveNodes = static_cast<int>(o.number("Mesh.MinimumCurveNodes"));
   m.subdivisionAlgorithm = static_cast<int>(o.number("Mesh.SubdivisionAlgorithm"));
   return m;
 }

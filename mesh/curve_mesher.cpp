@@ -14,10 +14,6 @@ constexpr double kGaussX[5] = {0.0, -0.5384693101056831, 0.5384693101056831, -0.
                                0.9061798459386640};
 constexpr double kGaussW[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
                                0.2369268850561891, 0.2369268850561891};
-constexpr double kPi = 3.14159265358979323846;
-// Segments a full turn of the tangent gets at least, however large the size: a circle is
-// never meshed coarser than a hexagon.
-constexpr double kSegmentsPerTurn = 6;
 
 // The integral of f over [a, b] by 5-point Gauss-Legendre quadrature.
 template <class F>
@@ -30,23 +26,6 @@ double gauss(double a, double b, F f) {
 
 double arcLength(const CurveGeometry& g, double a, double b) {
   return gauss(a, b, [&](double t) { return norm(g.firstDerivative(t)); });
-}
-
-// Total turning of the tangent along the curve (the integral of the curvature over arc
-// length): zero for a segment, the opening angle for a circular arc.
-double turningAngle(const CurveGeometry& g, Interval range) {
-  constexpr int kPieces = 64;
-  double total = 0;
-  for (int k = 0; k < kPieces; ++k) {
-    const double a = range.min + (range.max - range.min) * k / kPieces;
-    const double b = range.min + (range.max - range.min) * (k + 1) / kPieces;
-    total += gauss(a, b, [&](double t) {
-      const Vec3 d1 = g.firstDerivative(t);
-      const double speed2 = dot(d1, d1);
-      return speed2 > 0 ? norm(cross(d1, g.secondDerivative(t))) / speed2 : 0.0;
-    });
-  }
-  return total;
 }
 
 // Cumulative arc length at evenly spaced parameters, and its inverse.
@@ -95,7 +74,7 @@ class SizeIntegral {
     for (int k = 0; k <= 2 * kCells; ++k) sigma[k] = length * k / (2 * kCells);
     return sigma;
   }
-  // `fieldSizes`: empty, or the background field at fieldSampleArcLengths(length).
+  // `fieldSizes`: empty, or bounds on the size (sampleSizeBounds) at fieldSampleArcLengths.
   SizeIntegral(double length, double startSize, double endSize, const SizeRules& rules,
                std::vector<double> fieldSizes = {})
       : length_(length), h0_(startSize), h1_(endSize), rules_(rules),
@@ -139,28 +118,34 @@ class SizeIntegral {
   std::vector<double> cumulative_;
 };
 
-// The background field along the curve, at SizeIntegral's sample arc lengths.
-std::vector<double> sampleField(const ModelCurve& curve, const ArcLengthTable& arc,
-                                const SizeFields& fields) {
+// Bounds on the size besides the end points' sizes, at SizeIntegral's sample arc lengths: the
+// background field and the curvature bound (SizeRules::curvatureSize). Empty when neither applies.
+std::vector<double> sampleSizeBounds(const ModelCurve& curve, const ArcLengthTable& arc,
+                                     const SizeRules& rules, const SizeFields* fields) {
+  const bool field = fields && fields->hasBackground();
+  if (!field && !(rules.elementsPerTwoPi > 0)) return {};
   const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
   const Interval range = curve.geometry->range();
+  std::vector<double> ts;
   std::vector<Vec3> points;
+  ts.reserve(sigma.size());
   points.reserve(sigma.size());
   for (std::size_t k = 0; k < sigma.size(); ++k) {
-    const double t = arc.length() > 0
-                         ? arc.parameterAt(sigma[k])
-                         : range.min + (range.max - range.min) * k / (sigma.size() - 1);
-    points.push_back(curve.geometry->point(t));
+    ts.push_back(arc.length() > 0 ? arc.parameterAt(sigma[k])
+                                  : range.min + (range.max - range.min) * k / (sigma.size() - 1));
+    points.push_back(curve.geometry->point(ts.back()));
   }
-  std::vector<double> sizes(points.size());
-  fields.evaluate(points, {1, curve.tag}, sizes);
+  std::vector<double> sizes(points.size(), 1e22);
+  if (field) fields->evaluate(points, {1, curve.tag}, sizes);
+  for (std::size_t k = 0; k < sizes.size(); ++k)
+    sizes[k] = std::min(sizes[k], rules.curvatureSize(curveCurvature(*curve.geometry, ts[k])));
   return sizes;
 }
 
-int segmentCount(double integral, double turning, bool closed) {
-  integral = std::max(integral, turning * kSegmentsPerTurn / (2 * kPi));
+int segmentCount(double integral, int minimum, bool closed) {
   // Rounded up, except that up to 1% above a whole number is forgiven.
-  const int n = static_cast<int>(std::floor(integral + 0.99));
+  const int n = std::max(static_cast<int>(std::floor(integral + 0.99)), minimum);
+  // Fewer than 3 segments cannot close a loop without overlapping itself.
   return std::max(n, closed ? 3 : 1);
 }
 
@@ -226,14 +211,13 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
     return;
   }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
-  const SizeIntegral integral(
-      arc.length(), startSize, endSize, rules,
-      fields && fields->hasBackground() ? sampleField(curve, arc, *fields) : std::vector<double>{});
+  const SizeIntegral integral(arc.length(), startSize, endSize, rules,
+                              sampleSizeBounds(curve, arc, rules, fields));
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
   constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
   if (integral.total() > kMaxSegments)
     throw MeshError(id, "the mesh size asks for more than 1e9 segments");
-  const int segments = segmentCount(integral.total(), turningAngle(g, range), closed);
+  const int segments = segmentCount(integral.total(), rules.minimumSegments(g), closed);
 
   std::vector<NodeIndex> chain{pointNode(mesh, curve.startPoint)};
   for (int k = 1; k < segments; ++k) {

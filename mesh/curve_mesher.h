@@ -12,12 +12,12 @@ namespace geomesh {
 // Meshes one curve whose end points are already meshed (generateMesh's 0D stage). The target
 // size varies linearly in arc length between the sizes of the end points (SizeRules); the
 // curve gets as many segments as the integral of 1/size, rounded up unless within 1% above
-// a whole number; at least 1, 3 when closed, and 6 per full turn of its tangent (a circular
-// arc of angle a gets at least 6a/2pi). Its nodes split that integral into equal parts. Adds the
+// a whole number, and at least SizeRules::minimumSegments (3 when closed). Its nodes split that
+// integral into equal parts. Adds the
 // interior nodes with their parameters and the Line2 elements from start to end; nodeSizes (indexed
 // by node) receives the target size at each new node.
-// With a background size field, the target size is the smaller of the two (Transfinite
-// Curve constraints override both).
+// With a background size field or Mesh.MeshSizeFromCurvature, the target size is the smallest
+// of those bounds (Transfinite Curve constraints override all of them).
 void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
                std::vector<double>& nodeSizes, const SizeFields* fields = nullptr);
 

@@ -9,6 +9,9 @@ struct MeshOptions {
   double sizeFactor = 1;     // Mesh.MeshSizeFactor
   bool sizeFromPoints = true;          // Mesh.MeshSizeFromPoints
   bool sizeExtendFromBoundary = true;  // Mesh.MeshSizeExtendFromBoundary
+  double sizeFromCurvature = 0;        // Mesh.MeshSizeFromCurvature: elements per 2*Pi, 0: off
+  int minCircleNodes = 7;              // Mesh.MinimumCircleNodes: per full turn of an arc
+  int minCurveNodes = 3;               // Mesh.MinimumCurveNodes: curves neither straight nor arcs
   int algorithm2D = 6;       // Mesh.Algorithm
   int algorithm3D = 1;       // Mesh.Algorithm3D
   int smoothing = 1;         // Mesh.Smoothing

@@ -131,27 +131,27 @@ TEST(CurveMesher, CurveWithOneSizedEndStaysCoarse) {
   for (int c = 1; c <= 4; ++c) EXPECT_EQ(mesh.find({1, c})->elementCount(), expected[c - 1]);
 }
 
-TEST(CurveMesher, ClosedCircleGetsAtLeastSixSegments) {
+TEST(CurveMesher, ClosedCircleGetsMinimumCircleNodesSegments) {
   PolygonModelBuilder b;
   b.circle({0, 0}, 1, 100);
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, {}, 1, mesh, log);
   const EntityMesh* em = mesh.find({1, 1});
-  EXPECT_EQ(em->elementCount(), 6u);
+  EXPECT_EQ(em->elementCount(), 7u);  // Mesh.MinimumCircleNodes
   const ElementBlock* lines = em->findBlock(ElementType::Line2);
   EXPECT_EQ(lines->nodes.front(), lines->nodes.back());
 }
 
-TEST(CurveMesher, ArcsGetSixSegmentsPerFullTurnAtLeast) {
-  // Arcs of 20, 40, ..., 160 degrees with a huge size: ceil(6 angle / 360), with 1% slack.
+TEST(CurveMesher, ArcsGetMinimumCircleNodesPerFullTurnAtLeast) {
+  // Arcs of 20, 40, ..., 160 degrees with a huge size: ceil(7 angle / 360), with 1% slack.
   PolygonModelBuilder b;
   const double degree = testing::CircleGeometry::kPi / 180;
   for (int k = 1; k <= 8; ++k) b.arc({0, 0}, 1, 0, 20 * k * degree, 100);
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, {}, 1, mesh, log);
-  const std::size_t expected[8] = {1, 1, 1, 2, 2, 2, 3, 3};
+  const std::size_t expected[8] = {1, 1, 2, 2, 2, 3, 3, 4};
   for (int k = 1; k <= 8; ++k) EXPECT_EQ(mesh.find({1, k})->elementCount(), expected[k - 1]) << k;
   // A straight segment keeps one.
   EXPECT_EQ(segmentsOfUnitLine(100, 100), 1);
