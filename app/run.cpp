@@ -210,7 +210,6 @@ int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   for (const auto& [name, value] : cl.setStrings) session.stringOverrides()[name] = value;
   applyOptions(cl, session.options());
   if (!evaluateScript(cl, session, log)) return 0;
-  applyOptions(cl, session.options());
   if (!cl.dimension) {
     session.synchronize();
     log.info("Geometry: " + describeModel(session.model()));

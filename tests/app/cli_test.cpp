@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <sys/wait.h>
@@ -109,6 +110,33 @@ TEST_F(Cli, SetNumberOverridesDefineConstant) {
   fs::path geo = write("p.geo", "DefineConstant[ n = 3 ];\nPrintf(\"n=%g\", n);\n");
   ASSERT_EQ(run({geo.string(), "-0", "-setnumber", "n", "7"}), 0) << err_.str();
   EXPECT_EQ(out_.str(), "n=7\n");
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(Cli, ScriptOptionsOverrideCommandLineFlags) {
+  // Flags set options before the script runs, so what the script sets wins, as in Gmsh.
+  fs::path plain = write("plain.geo", kSquare);
+  fs::path fixed = write("fixed.geo", std::string(kSquare) +
+                                          "Mesh.MeshSizeFactor = 1;\nMesh.Algorithm = 5;\n"
+                                          "Printf(\"factor %g algorithm %g\", "
+                                          "Mesh.MeshSizeFactor, Mesh.Algorithm);\n");
+  ASSERT_EQ(run({fixed.string(), "-2", "-clscale", "0.5", "-algo", "front2d", "-o",
+                 (dir_ / "fixed.msh").string()}),
+            0)
+      << err_.str();
+  EXPECT_EQ(out_.str(), "square ready\nfactor 1 algorithm 5\n");
+  ASSERT_EQ(run({plain.string(), "-2", "-algo", "del2d", "-o", (dir_ / "plain.msh").string()}),
+            0)
+      << err_.str();
+  EXPECT_EQ(slurp(dir_ / "fixed.msh"), slurp(dir_ / "plain.msh"));
+  ASSERT_EQ(run({plain.string(), "-2", "-clscale", "0.5", "-o", (dir_ / "fine.msh").string()}),
+            0)
+      << err_.str();
+  EXPECT_GT(slurp(dir_ / "fine.msh").size(), 2 * slurp(dir_ / "plain.msh").size());
 }
 
 TEST_F(Cli, MeshFailureWritesNoFile) {
