@@ -94,8 +94,10 @@ std::optional<Value> Interpreter::callListFunction(const ast::Expr& call) {
     if (call.args.size() != 1) fail(call.loc, "ListFromFile takes a file name");
     std::filesystem::path path = evaluateString(*call.args[0]);
     if (path.is_relative()) path = std::filesystem::path(directoryOf(call.loc.file)) / path;
-    std::ifstream in(path);
-    if (!in) fail(call.args[0]->loc, "cannot open '" + path.string() + "'");
+    std::error_code ignored;
+    std::ifstream in;
+    if (std::filesystem::is_regular_file(path, ignored)) in.open(path);
+    if (!in.is_open()) fail(call.args[0]->loc, "cannot open '" + path.string() + "'");
     std::vector<double> values;
     for (double x; in >> x;) values.push_back(x);
     if (!in.eof())

@@ -122,6 +122,10 @@ void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLoc
     return;
   }
   std::filesystem::path path = evaluateString(*command.redirectTarget);
+  if (session_.sandboxed()) {
+    warn(where, "Printf into '" + path.string() + "' skipped: this session writes no file");
+    return;
+  }
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
   std::ofstream file(path, command.redirect == ">>" ? std::ios::app : std::ios::trunc);
   if (!file) fail(command.redirectTarget->loc, "cannot write to '" + path.string() + "'");

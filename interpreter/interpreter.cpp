@@ -195,9 +195,9 @@ void Interpreter::executeInclude(const ast::CommandStmt& command, const SourceLo
   for (const auto& open : includeStack_)
     if (open == canonical)
       fail(command.args[0]->loc, "include cycle: '" + shown + "' is already being read");
-  auto text = readFile(shown);
-  if (!text || std::filesystem::is_directory(path, ignored))
-    fail(command.args[0]->loc, "cannot open include file '" + shown + "'");
+  // Only regular files: a device such as /dev/zero would be read forever.
+  auto text = std::filesystem::is_regular_file(path, ignored) ? readFile(shown) : std::nullopt;
+  if (!text) fail(command.args[0]->loc, "cannot open include file '" + shown + "'");
   includeStack_.push_back(canonical);
   try {
     runSource(shown, std::move(*text));

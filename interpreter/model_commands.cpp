@@ -117,6 +117,10 @@ void Interpreter::meshNow(const ast::Expr& dimension, const SourceLocation& wher
   const double dim = evaluateNumber(dimension);
   if (dim != 0 && dim != 1 && dim != 2 && dim != 3)
     fail(dimension.loc, "'Mesh' takes a dimension 0, 1, 2 or 3");
+  if (session_.sandboxed()) {
+    warn(where, "'Mesh' skipped: this session meshes nothing");
+    return;
+  }
   try {
     session_.generate(static_cast<int>(dim));
   } catch (const MeshError& error) {
@@ -135,6 +139,11 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
   const std::string ext = extensionOf(path);
   const std::string shown = path.lexically_normal().string();
+  if (session_.sandboxed()) {
+    warn(where, "'" + command.words[0] + "' of '" + shown +
+                    "' skipped: this session writes no file");
+    return;
+  }
   std::function<void(std::ostream&)> write;
   if (ext == ".msh") {
     // Nothing meshed yet: the file still lists the entities, as Gmsh's does.

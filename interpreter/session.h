@@ -44,6 +44,10 @@ class Session {
   // Whether scripts may run shell commands (SystemCall "..."); off unless the user asks.
   bool systemCallsAllowed() const { return systemCallsAllowed_; }
   void allowSystemCalls(bool allow) { systemCallsAllowed_ = allow; }
+  // A sandboxed session (the fuzz target) lets its scripts neither write files nor mesh:
+  // Printf into a file, Save, Print and Mesh are skipped with a warning.
+  bool sandboxed() const { return sandboxed_; }
+  void setSandboxed(bool sandboxed) { sandboxed_ = sandboxed; }
 
   // Parses and evaluates a script; throws ScriptError (file:line:col diagnostics).
   void runFile(const std::string& path);
@@ -87,6 +91,7 @@ class Session {
   std::vector<std::string> originFiles_;
   std::uint32_t lastOriginFile_ = 0;
   bool systemCallsAllowed_ = false;
+  bool sandboxed_ = false;
   bool meshFromFile_ = false;
 };
 

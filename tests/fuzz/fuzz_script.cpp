@@ -14,6 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   geomesh::SilentSink log;
   std::ostringstream out;
   geomesh::Session session(log, out);
+  session.setSandboxed(true);  // arbitrary scripts must not write files or mesh for minutes
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     session.runText(text, "fuzz.geo");

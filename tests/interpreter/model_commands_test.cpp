@@ -275,5 +275,31 @@ TEST_F(ModelCommands, PrintfFollowsTheVerbosity) {
   EXPECT_EQ(runMain(loud, "Printf(\"shown\");\n"), "shown\n");
 }
 
+TEST_F(ModelCommands, ASandboxedSessionNeitherWritesNorMeshes) {
+  ScriptRun run;
+  run.session.setSandboxed(true);
+  runMain(run, std::string(kUnitSquare) +
+                   "Mesh 2;\nSave \"out.msh\";\nPrint \"out.opt\";\n"
+                   "Printf(\"x\") > \"out.txt\";\nPrintf(\"done\");\n");
+  EXPECT_EQ(run.out.str(), "done\n");
+  EXPECT_EQ(run.session.mesh().nodeCount(), 0u);
+  EXPECT_TRUE(fs::is_empty(dir_));
+  ASSERT_EQ(run.log.warnings.size(), 4u);
+  EXPECT_NE(run.log.warnings[0].find("main.geo:6:1: warning: 'Mesh' skipped"), std::string::npos)
+      << run.log.warnings[0];
+  EXPECT_NE(run.log.warnings[3].find("Printf into 'out.txt' skipped"), std::string::npos)
+      << run.log.warnings[3];
+}
+
+TEST_F(ModelCommands, IncludeAndListFromFileReadOnlyRegularFiles) {
+  // A device would be read forever; a directory has no text.
+  EXPECT_NE(firstLineOf("Include \"/dev/zero\";").find("cannot open include file '/dev/zero'"),
+            std::string::npos);
+  EXPECT_NE(firstLineOf("Include \"/tmp\";").find("cannot open include file '/tmp'"),
+            std::string::npos);
+  EXPECT_NE(firstLineOf("x() = ListFromFile(\"/dev/zero\");").find("cannot open '/dev/zero'"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace geomesh::testing
