@@ -211,27 +211,14 @@ TEST(MeshAdapt, HolesEmbeddedPointAndEmbeddedCurveAreKept) {
 }
 
 TEST(MeshAdapt, SpherePatchIsMeshedWithItsOwnLengths) {
-  // From the equator to latitude 1.2 over a quarter turn: in the parameter plane the top
-  // side is 2.8x shorter on the surface than the bottom one.
   const double h = 0.05;
-  constexpr double kPi = testing::SphereGeometry::kPi;
-  Model model;
-  const auto sphere = std::make_shared<testing::SphereGeometry>();
-  const std::vector<Vec2> corners{{0, 0}, {kPi / 2, 0}, {kPi / 2, 1.2}, {0, 1.2}};
-  ModelSurface patch{1, {{}}, sphere, {}, {}};
-  for (int k = 0; k < 4; ++k) model.addPoint({k + 1, sphere->point(corners[k]), h});
-  for (int k = 0; k < 4; ++k) {
-    model.addCurve({k + 1, k + 1, (k + 1) % 4 + 1,
-                    std::make_shared<testing::IsoCurve>(sphere, corners[k], corners[(k + 1) % 4])});
-    patch.loops[0].push_back(k + 1);
-  }
-  model.addSurface(patch);
+  const Model model = testing::spherePatchModel(h);
   const Mesh mesh = meshAdapt(model);
   const MeshCheckReport report = checkMesh(model, mesh);  // orientation: outward normals
   ASSERT_TRUE(report.ok()) << report.summary();
   expectBoundaryIsTheCurveMeshes(model, mesh, 1);
   EXPECT_GE(fractionNearSize(mesh, 1, uniform(h)), 0.97);
-  const double exactArea = kPi / 2 * std::sin(1.2);
+  const double exactArea = testing::SphereGeometry::kPi / 2 * std::sin(1.2);
   EXPECT_NEAR(testing::meshArea(mesh, 1), exactArea, 2e-3 * exactArea);
   const QualityStats gamma = meshQuality(mesh, 2, QualityMeasure::Gamma);
   EXPECT_GT(gamma.min, 0.45);

@@ -98,6 +98,25 @@ class IsoCurve final : public CurveGeometry {
   Vec2 a_, b_;
 };
 
+// Surface 1: a patch of the unit sphere from the equator to latitude 1.2, a quarter turn wide,
+// bounded by four iso-parameter curves with mesh size h at its corners. In the parameter plane
+// its top side is 2.8x shorter on the surface than the bottom one.
+inline Model spherePatchModel(double h) {
+  constexpr double kPi = SphereGeometry::kPi;
+  Model model;
+  const auto sphere = std::make_shared<SphereGeometry>();
+  const std::vector<Vec2> corners{{0, 0}, {kPi / 2, 0}, {kPi / 2, 1.2}, {0, 1.2}};
+  ModelSurface patch{1, {{}}, sphere, {}, {}};
+  for (int k = 0; k < 4; ++k) model.addPoint({k + 1, sphere->point(corners[k]), h});
+  for (int k = 0; k < 4; ++k) {
+    model.addCurve({k + 1, k + 1, (k + 1) % 4 + 1,
+                    std::make_shared<IsoCurve>(sphere, corners[k], corners[(k + 1) % 4])});
+    patch.loops[0].push_back(k + 1);
+  }
+  model.addSurface(patch);
+  return model;
+}
+
 // Builds polygonal plane surfaces in z = 0 point by point.
 class PolygonModelBuilder {
  public:

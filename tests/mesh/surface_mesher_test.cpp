@@ -198,23 +198,8 @@ TEST(SurfaceMesher, SmoothingKeepsTheMeshValid) {
 }
 
 TEST(SurfaceMesher, CurvedSurfaceIsMeshedWithItsOwnLengths) {
-  // A patch of the unit sphere from the equator to latitude 1.2, a quarter turn wide: in the
-  // parameter plane the top edge is 2.8x shorter on the surface than the bottom one.
   const double h = 0.05;
-  Model model;
-  const auto sphere = std::make_shared<testing::SphereGeometry>();
-  const std::vector<Vec2> corners{{0, 0},
-                                  {testing::SphereGeometry::kPi / 2, 0},
-                                  {testing::SphereGeometry::kPi / 2, 1.2},
-                                  {0, 1.2}};
-  ModelSurface patch{1, {{}}, sphere, {}, {}};
-  for (int k = 0; k < 4; ++k) model.addPoint({k + 1, sphere->point(corners[k]), h});
-  for (int k = 0; k < 4; ++k) {
-    model.addCurve({k + 1, k + 1, (k + 1) % 4 + 1,
-                    std::make_shared<testing::IsoCurve>(sphere, corners[k], corners[(k + 1) % 4])});
-    patch.loops[0].push_back(k + 1);
-  }
-  model.addSurface(patch);
+  const Model model = testing::spherePatchModel(h);
   const Mesh mesh = meshModel(model);
   const MeshCheckReport report = checkMesh(model, mesh);  // orientation: outward normals
   ASSERT_TRUE(report.ok()) << report.summary();
