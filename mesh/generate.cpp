@@ -10,6 +10,7 @@
 #include "mesh/curve_mesher.h"
 #include "mesh/fields/size_field.h"
 #include "mesh/mesh_check.h"
+#include "mesh/periodic.h"
 #include "mesh/recombine.h"
 #include "mesh/size_rules.h"
 #include "mesh/subdivision.h"
@@ -145,6 +146,7 @@ int surfaceAlgorithm(const SurfaceStage& stage, const ModelSurface& surface) {
 
 void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh,
                     std::vector<double>& nodeSizes) {
+  if (isPeriodicSurface(surface)) return;  // the image of its master: copyPeriodicSurfaces
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
@@ -191,6 +193,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& no
                 " is not available; elements are not split");
   for (const auto& [tag, surface] : model.surfaces())
     meshOneSurface(stage, surface, mesh, nodeSizes);
+  copyPeriodicSurfaces(model, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
@@ -219,8 +222,10 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   meshPoints(model, rules, fields, mesh, nodeSizes);
   if (dim >= 1) {
     const StageTimer timer(1);
+    const std::map<int, Periodicity> periodic = periodicCurves(model);
     for (const auto& [tag, curve] : model.curves())
-      meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
+      if (!periodic.contains(tag)) meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
+    copyPeriodicCurves(model, periodic, mesh, nodeSizes);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {

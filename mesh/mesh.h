@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "kernel/model.h"
@@ -24,6 +26,14 @@ struct ElementBlock {
   }
 };
 
+// A periodic entity's mesh is the image of its master's by `affine` (row-major 4x4); `nodes`
+// pairs each node of the entity's closure with the master node it is the image of.
+struct PeriodicLink {
+  int master = 0;
+  std::vector<double> affine;
+  std::vector<std::pair<NodeIndex, NodeIndex>> nodes;  // (node here, node of the master)
+};
+
 // The mesh of one model entity: the nodes classified on it (not those of its boundary) and its
 // elements, which may use boundary nodes too.
 struct EntityMesh {
@@ -33,6 +43,7 @@ struct EntityMesh {
   // points and volumes, or when the entity has no parametrization.
   std::vector<double> parametric;
   std::vector<ElementBlock> blocks;
+  std::optional<PeriodicLink> periodic;
 
   ElementBlock& block(ElementType type);  // finds or appends
   const ElementBlock* findBlock(ElementType type) const;

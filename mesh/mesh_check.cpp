@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <tuple>
 
+#include "mesh/periodic.h"
+
 namespace geomesh {
 namespace {
 
@@ -67,6 +69,7 @@ class Checker {
     for (const auto& [tag, curve] : model_.curves()) checkCurve(curve);
     for (const auto& [tag, surface] : model_.surfaces()) checkSurface(surface);
     checkVolumes();
+    checkPeriodicLinks();
     return std::move(report_);
   }
 
@@ -317,6 +320,41 @@ class Checker {
                    d = mesh_.node(n[3]);
         if (!(dot(cross(b - a, c - a), d - a) > 0) && reported++ < kMaxProblemsPerCheck)
           problem(id, "tetrahedron " + std::to_string(e + 1) + " has a non-positive Jacobian");
+      }
+    }
+  }
+
+  // The diagonal of the box around all nodes (1 for an empty or one-node mesh).
+  double nodeExtent() const {
+    BoundingBox box;
+    for (NodeIndex n = 0; n < mesh_.nodeCount(); ++n) box.include(mesh_.node(n));
+    const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
+    return diagonal > 0 ? diagonal : 1;
+  }
+
+  // Each node of a periodic entity's pairs is the affine image of its master node.
+  void checkPeriodicLinks() {
+    const double tolerance = 1e-9 * nodeExtent();
+    for (const auto& [id, em] : mesh_.entities()) {
+      if (!em.periodic) continue;
+      if (!em.periodic->affine.empty() && em.periodic->affine.size() != 16) {
+        problem(id, "periodic transformation has " +
+                        std::to_string(em.periodic->affine.size()) + " values, not 16");
+        continue;
+      }
+      std::size_t reported = 0;
+      for (const auto& [node, master] : em.periodic->nodes) {
+        if (node >= mesh_.nodeCount() || master >= mesh_.nodeCount()) {
+          if (reported++ < kMaxProblemsPerCheck)
+            problem(id, "periodic node pair (" + nodeName(node) + ", " + nodeName(master) +
+                            ") uses a missing node");
+          continue;
+        }
+        const Vec3 image = applyAffine(em.periodic->affine, mesh_.node(master));
+        const double d = distance(image, mesh_.node(node));
+        if (d > tolerance && reported++ < kMaxProblemsPerCheck)
+          problem(id, nodeName(node) + " is not the image of its periodic master " +
+                          nodeName(master) + " (distance " + std::to_string(d) + ")");
       }
     }
   }

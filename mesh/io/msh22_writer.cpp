@@ -87,6 +87,7 @@ void writeMsh22Body(MshEncoder& out, const Model& model, const Mesh& mesh,
   out.text("$Elements\n" + std::to_string(lineCount(runs, 0, runs.size())) + "\n");
   writeElementRuns(out, content, runs);
   endSection(out, "$EndElements\n");
+  writePeriodic(out, mesh, content, true);
 }
 
 }  // namespace geomesh

@@ -120,6 +120,7 @@ void writeMsh41Body(MshEncoder& out, const Model& model, const Mesh& mesh,
   writeEntities(out, model, mesh, content);
   writeNodes(out, mesh, content);
   writeElements(out, content);
+  writePeriodic(out, mesh, content, false);
 }
 
 }  // namespace geomesh

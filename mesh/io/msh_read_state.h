@@ -32,6 +32,9 @@ void readMsh41Nodes(MshDecoder& in, MshReadState& state);
 void readMsh41Elements(MshDecoder& in, MshReadState& state);
 void readMsh22Nodes(MshDecoder& in, MshReadState& state);
 void readMsh22Elements(MshDecoder& in, MshReadState& state);
+// $Periodic: each link is kept in the linked entity's EntityMesh::periodic.
+void readMsh41Periodic(MshDecoder& in, MshReadState& state);
+void readMsh22Periodic(MshDecoder& in, MshReadState& state);
 
 // Reads the end marker of a section, after optional whitespace (a line break follows binary
 // data).

@@ -106,8 +106,10 @@ void readSection(MshDecoder& in, MshReadState& state, int major, std::string_vie
   if (major == 4 && name == "Elements") return readMsh41Elements(in, state);
   if (major == 2 && name == "Nodes") return readMsh22Nodes(in, state);
   if (major == 2 && name == "Elements") return readMsh22Elements(in, state);
+  if (major == 4 && name == "Periodic") return readMsh41Periodic(in, state);
+  if (major == 2 && name == "Periodic") return readMsh22Periodic(in, state);
   if (name == "PartitionedEntities") in.fail("partitioned meshes are not supported");
-  in.skipPast("$End" + name);  // data we do not use: post-processing views, periodicity...
+  in.skipPast("$End" + name);  // data we do not use: post-processing views...
 }
 
 }  // namespace

@@ -17,5 +17,7 @@ void writeMsh41Body(MshEncoder& out, const Model& model, const Mesh& mesh,
                     const MshContent& content);
 void writeMsh22Body(MshEncoder& out, const Model& model, const Mesh& mesh,
                     const MshContent& content, bool saveAll);
+// $Periodic, when some saved entity is periodic; `msh2` selects the MSH 2.2 layout.
+void writePeriodic(MshEncoder& out, const Mesh& mesh, const MshContent& content, bool msh2);
 
 }  // namespace geomesh
