@@ -91,7 +91,8 @@ SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
   rules.minCircleNodes = options.minCircleNodes;
   rules.minCurveNodes = options.minCurveNodes;
   if (rules.elementsPerTwoPi > 0)
-    for (const auto& [tag, curve] : model.curves()) {
+    for (const auto& entry : model.curves()) {
+      const ModelCurve& curve = entry.second;
       if (!curve.geometry) continue;
       const Interval r = curve.geometry->range();
       const auto bound = [&](int point, double t) {

@@ -213,9 +213,9 @@ TEST(PeriodicSurface, BoundaryThatIsNotAnImageIsAnError) {
 }
 
 // Writes the mesh, reads it back and compares the links by node position.
-void expectLinksSurvive(const Model& model, const Mesh& mesh, double version) {
+void expectLinksSurvive(const Model& model, const Mesh& mesh, double version, bool binary) {
   std::stringstream file;
-  writeMsh(file, model, mesh, {false, false, version});
+  writeMsh(file, model, mesh, {false, binary, version});
   EXPECT_NE(file.str().find("$Periodic"), std::string::npos);
   Model readModel;
   Mesh read;
@@ -248,8 +248,10 @@ TEST(PeriodicIo, LinksAreWrittenAndReadBack) {
   b.square(1, 0, 0, sizes);
   b.square(5, 0, 2, sizes, Periodicity{1, translation(0, 2, 0)});
   const Mesh mesh = generate(b.model, 2);
-  expectLinksSurvive(b.model, mesh, 4.1);
-  expectLinksSurvive(b.model, mesh, 2.2);
+  for (bool binary : {false, true}) {
+    expectLinksSurvive(b.model, mesh, 4.1, binary);
+    expectLinksSurvive(b.model, mesh, 2.2, binary);
+  }
 }
 
 TEST(PeriodicIo, NoSectionWithoutPeriodicEntities) {
