@@ -1,9 +1,12 @@
 #include "mesh/periodic.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -192,28 +195,42 @@ std::vector<int> boundaryCurves(const Model& model, int surface) {
   return tags;
 }
 
-// Slave boundary nodes, sorted by x, found by position.
+// Nodes found by position: a hash grid of cells twice the tolerance wide, so that a query
+// looks at its cell and the 26 around it.
 class NodeLocator {
  public:
   NodeLocator(const Mesh& mesh, const std::vector<NodeIndex>& nodes, double tol)
-      : mesh_(mesh), nodes_(nodes), tol_(tol) {
-    std::sort(nodes_.begin(), nodes_.end(),
-              [&](NodeIndex a, NodeIndex b) { return mesh_.node(a).x < mesh_.node(b).x; });
-    nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+      : mesh_(mesh), tol_(tol), cell_(2 * tol) {
+    for (NodeIndex n : nodes) cells_.emplace(key(cellOf(mesh.node(n))), n);
   }
   // The node at p, or nullopt.
   std::optional<NodeIndex> at(Vec3 p) const {
-    auto it = std::lower_bound(nodes_.begin(), nodes_.end(), p.x - tol_,
-                               [&](NodeIndex n, double x) { return mesh_.node(n).x < x; });
-    for (; it != nodes_.end() && mesh_.node(*it).x <= p.x + tol_; ++it)
-      if (distance(mesh_.node(*it), p) <= tol_) return *it;
+    const std::array<std::int64_t, 3> c = cellOf(p);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto [first, last] = cells_.equal_range(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+          for (auto it = first; it != last; ++it)
+            if (distance(mesh_.node(it->second), p) <= tol_) return it->second;
+        }
     return std::nullopt;
   }
 
  private:
+  std::array<std::int64_t, 3> cellOf(Vec3 p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x / cell_)),
+            static_cast<std::int64_t>(std::floor(p.y / cell_)),
+            static_cast<std::int64_t>(std::floor(p.z / cell_))};
+  }
+  static std::uint64_t key(std::array<std::int64_t, 3> c) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+    return h;
+  }
+
   const Mesh& mesh_;
-  std::vector<NodeIndex> nodes_;
-  double tol_;
+  double tol_, cell_;
+  std::unordered_multimap<std::uint64_t, NodeIndex> cells_;
 };
 
 std::vector<NodeIndex> closureBoundaryNodes(const Model& model, const Mesh& mesh, int surface) {
