@@ -206,8 +206,19 @@ int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   Session session(log, out);
   session.options().setNumber("General.Verbosity", cl.verbosity);
   session.allowSystemCalls(cl.allowSystemCalls);
-  for (const auto& [name, value] : cl.setNumbers) session.numberOverrides()[name] = value;
-  for (const auto& [name, value] : cl.setStrings) session.stringOverrides()[name] = value;
+  // -setnumber / -setstring set the option of that name if there is one, else a parameter.
+  for (const auto& [name, value] : cl.setNumbers) {
+    if (session.options().hasNumber(name))
+      session.options().setNumber(name, value);
+    else
+      session.numberOverrides()[name] = value;
+  }
+  for (const auto& [name, value] : cl.setStrings) {
+    if (session.options().hasString(name))
+      session.options().setString(name, value);
+    else
+      session.stringOverrides()[name] = value;
+  }
   applyOptions(cl, session.options());
   if (!evaluateScript(cl, session, log)) return 0;
   if (!cl.dimension) {

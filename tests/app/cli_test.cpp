@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 
 #include "app/run.h"
+#include "tests/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -21,8 +22,8 @@ namespace {
 class Cli : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("geomesh-cli-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = scratch::path(
+        "cli-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -137,6 +138,16 @@ TEST_F(Cli, ScriptOptionsOverrideCommandLineFlags) {
             0)
       << err_.str();
   EXPECT_GT(slurp(dir_ / "fine.msh").size(), 2 * slurp(dir_ / "plain.msh").size());
+}
+
+TEST_F(Cli, SetNumberAndSetStringAlsoSetOptions) {
+  fs::path geo = write("p.geo", "Printf(\"%g\", Mesh.Algorithm);\n"
+                                "Printf(StrCat(\"name \", General.DefaultFileName));\n");
+  ASSERT_EQ(run({geo.string(), "-0", "-setnumber", "Mesh.Algorithm", "5", "-setstring",
+                 "General.DefaultFileName", "plate.geo"}),
+            0)
+      << err_.str();
+  EXPECT_EQ(out_.str(), "5\nname plate.geo\n");
 }
 
 TEST_F(Cli, MeshFailureWritesNoFile) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/run.h"
+#include "tests/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -15,7 +16,7 @@ namespace {
 
 std::string meshBytes(const std::string& script, const std::vector<std::string>& extra,
                       const std::string& tag) {
-  const fs::path out = fs::temp_directory_path() / ("geomesh-determinism-" + tag + ".msh");
+  const fs::path out = scratch::path("determinism-" + tag + ".msh");
   std::vector<std::string> args{script, "-2", "-v", "0", "-o", out.string()};
   args.insert(args.end(), extra.begin(), extra.end());
   std::ostringstream sout, serr;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "app/run.h"
+#include "tests/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -13,7 +14,7 @@ namespace geomesh {
 namespace {
 
 TEST(LargeInput, HundredMegabyteScriptReportsItsLastLine) {
-  const fs::path dir = fs::temp_directory_path() / "geomesh-large-input";
+  const fs::path dir = scratch::path("large-input");
   fs::create_directories(dir);
   const fs::path script = dir / "huge.geo";
   const std::string line = "x = 1 + 2 * 3; // padding padding padding padding padding padding\n";

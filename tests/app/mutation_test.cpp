@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/run.h"
+#include "tests/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -44,7 +45,7 @@ TEST(Mutations, EveryMutantSucceedsOrFailsWithALocatedDiagnostic) {
       readFile(source / "tests" / "golden" / "scripts" / "graded.geo"),
       readFile(source / "tests" / "golden" / "scripts" / "printf.geo"),
   };
-  const fs::path dir = fs::temp_directory_path() / "geomesh-mutations";
+  const fs::path dir = scratch::path("mutations");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path script = dir / "mutant.geo";

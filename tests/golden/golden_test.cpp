@@ -14,6 +14,7 @@
 #include "app/run.h"
 #include "golden_expectation.h"
 #include "mesh/io/msh_reader.h"
+#include "tests/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -117,7 +118,7 @@ class GoldenScript : public testing::TestWithParam<GoldenFiles> {};
 TEST_P(GoldenScript, MatchesExpectedSummary) {
   const std::string& name = GetParam().name;
   const GoldenCase c = readExpectations(GetParam().expected.string());
-  const fs::path msh = fs::temp_directory_path() / ("geomesh-golden-" + name + ".msh");
+  const fs::path msh = scratch::path("golden-" + name + ".msh");
   fs::remove(msh);
   std::vector<std::string> args = c.args;
   args.push_back(GetParam().script.string());

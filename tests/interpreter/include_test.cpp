@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "script_runner.h"
+#include "tests/scratch.h"
 
 namespace geomesh::testing {
 namespace {
@@ -14,8 +15,8 @@ namespace fs = std::filesystem;
 class IncludeTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("geomesh_include_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = scratch::path(
+        "include-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "sub");
   }

@@ -9,6 +9,7 @@
 #include "mesh/io/msh_reader.h"
 #include "mesh/quality.h"
 #include "script_runner.h"
+#include "tests/scratch.h"
 
 namespace geomesh::testing {
 namespace {
@@ -25,9 +26,8 @@ Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 class ModelCommands : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("geomesh_model_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = scratch::path(
+        "model-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -11,6 +11,7 @@
 using namespace std::string_literals;
 
 #include "kernel/geo/geo_factory.h"
+#include "tests/scratch.h"
 
 namespace geomesh {
 namespace {
@@ -193,7 +194,7 @@ TEST(MshWriter, FileIsReplacedOnlyOnSuccess) {
   Model model;
   Mesh mesh;
   buildTriangle(model, mesh, true);
-  const auto dir = std::filesystem::temp_directory_path() / "geomesh_msh_writer_test";
+  const auto dir = scratch::path("msh-writer");
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "out.msh").string();
   writeMshFile(path, model, mesh, {});
