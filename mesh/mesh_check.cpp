@@ -135,13 +135,17 @@ class Checker {
     const EntityMesh* em = mesh_.find(id);
     if (!em) return;  // not meshed (dimension 0 only)
     const ElementBlock* lines = em->findBlock(ElementType::Line2);
-    const EntityMesh* start = mesh_.find({0, curve.startPoint});
-    const EntityMesh* end = mesh_.find({0, curve.endPoint});
     if (!lines || lines->size() == 0) return problem(id, "has no line elements");
-    if (!start || !end || start->nodes.empty() || end->nodes.empty())
-      return problem(id, "end points have no mesh nodes");
-    if (lines->nodes.front() != start->nodes.front() || lines->nodes.back() != end->nodes.front())
-      problem(id, "line elements do not start and end at the curve's end points");
+    // End points of tag 0 are unknown: the curve was read from a file without topology.
+    if (curve.startPoint != 0 || curve.endPoint != 0) {
+      const EntityMesh* start = mesh_.find({0, curve.startPoint});
+      const EntityMesh* end = mesh_.find({0, curve.endPoint});
+      if (!start || !end || start->nodes.empty() || end->nodes.empty())
+        return problem(id, "end points have no mesh nodes");
+      if (lines->nodes.front() != start->nodes.front() ||
+          lines->nodes.back() != end->nodes.front())
+        problem(id, "line elements do not start and end at the curve's end points");
+    }
     for (std::size_t e = 1; e < lines->size(); ++e)
       if (lines->element(e)[0] != lines->element(e - 1)[1])
         return problem(id, "line elements do not form a chain");
@@ -196,7 +200,9 @@ class Checker {
       const int count = static_cast<int>(run - k);
       while (next < expected.size() && expected[next].first < edges[k])
         report(expected[next++].first, "of the boundary is not a triangle edge");
-      int wanted = 2;
+      // A surface read from a file without topology (MSH 2.2) has no known boundary: there,
+      // an edge may border one triangle (the boundary) or two.
+      int wanted = surface.loops.empty() ? std::clamp(count, 1, 2) : 2;
       if (next < expected.size() && expected[next].first == edges[k])
         wanted = expected[next++].second;
       if (count != wanted)
@@ -234,9 +240,11 @@ class Checker {
     for (int p : surface.embeddedPoints) allowEntity({0, p});
     std::size_t reported = 0;
     const SurfaceGeometry* g = surface.geometry.get();
+    // Without a known boundary (MSH 2.2), the surface's closure is unknown too.
+    const bool closureKnown = !surface.loops.empty();
     for (std::size_t e = 0; e < triangles.size(); ++e) {
       const auto n = triangles.element(e);
-      if (!allowed(n[0]) || !allowed(n[1]) || !allowed(n[2])) {
+      if (closureKnown && (!allowed(n[0]) || !allowed(n[1]) || !allowed(n[2]))) {
         if (reported++ < kMaxProblemsPerCheck)
           problem(id, "triangle " + std::to_string(e + 1) + " uses a node of another entity");
         continue;

@@ -6,6 +6,9 @@
 #include <string>
 
 #include "mesh/io/msh_writer.h"
+#include "mesh/generate.h"
+#include "mesh/mesh_check.h"
+#include "mesh_test_models.h"
 
 namespace geomesh {
 namespace {
@@ -183,6 +186,26 @@ TEST(MshReader, Version22ElementsInSeveralGroupsAreReadOnce) {
   const ReadResult back = read(write(r, {.version = 2.2}));
   EXPECT_EQ(back.mesh.elementCount(2), 14u);
   EXPECT_EQ(back.model.physicalTagsOf({2, 1}), (std::vector<int>{1, 8}));
+}
+
+TEST(MshReader, Version22MeshesPassTheCheckThatStillFindsDefects) {
+  // MSH 2.2 carries no topology: the check cannot know a surface's boundary or a curve's end
+  // points, but must still find an edge shared by three triangles.
+  testing::PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.2), b.circle({0.5, 0.5}, 0.2, 0.1)});
+  ReadResult generated{b.model, {}};
+  SilentSink log;
+  generateMesh(generated.model, {}, 2, generated.mesh, log);
+  ReadResult r = read(write(generated, {.version = 2.2}));
+  const MeshCheckReport report = checkMesh(r.model, r.mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  ElementBlock& triangles = r.mesh.entity({2, 1}).block(ElementType::Triangle3);
+  const std::vector<NodeIndex> first(triangles.nodes.begin(), triangles.nodes.begin() + 3);
+  triangles.nodes.insert(triangles.nodes.end(), first.begin(), first.end());
+  const MeshCheckReport broken = checkMesh(r.model, r.mesh);
+  ASSERT_FALSE(broken.ok());
+  EXPECT_NE(broken.summary().find("triangles instead of 2"), std::string::npos)
+      << broken.summary();
 }
 
 TEST(MshReader, ErrorsNameFileAndLine) {
