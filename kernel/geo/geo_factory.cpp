@@ -14,26 +14,45 @@ using geo_detail::fail;
 using geo_detail::requireNew;
 
 // The curves of a loop are reordered so that each one starts where the previous one ends; the
-// first curve stays first and no curve is reversed (a wrongly signed curve is an error).
+// first curve stays first and no curve is reversed (a wrongly signed curve is an error). As in
+// Gmsh, a loop may hold several closed chains (a boundary and its holes), one after the other.
 template <class EndsOf>
 std::vector<int> chainLoop(int loopTag, std::vector<int> remaining, const EndsOf& endsOf) {
   std::vector<int> chain{remaining.front()};
+  std::size_t chainStart = 0;  // where the chain being followed begins
   remaining.erase(remaining.begin());
+  auto closes = [&] { return endsOf(chain.back())[1] == endsOf(chain[chainStart])[0]; };
   while (!remaining.empty()) {
     const int end = endsOf(chain.back())[1];
     auto next = std::find_if(remaining.begin(), remaining.end(),
                              [&](int c) { return endsOf(c)[0] == end; });
-    if (next == remaining.end())
+    if (next == remaining.end() && closes()) {
+      chainStart = chain.size();
+      next = remaining.begin();
+    } else if (next == remaining.end()) {
       fail("Curve loop ", loopTag, " is not a chain: curve ", chain.back(), " ends at point ",
            end, " and no other curve of the loop starts there");
+    }
     chain.push_back(*next);
     remaining.erase(next);
   }
-  const int last = endsOf(chain.back())[1], first = endsOf(chain.front())[0];
-  if (last != first)
-    fail("Curve loop ", loopTag, " does not close: gap between point ", last, " (end of curve ",
-         chain.back(), ") and point ", first, " (start of curve ", chain.front(), ")");
+  if (!closes())
+    fail("Curve loop ", loopTag, " does not close: gap between point ", endsOf(chain.back())[1],
+         " (end of curve ", chain.back(), ") and point ", endsOf(chain[chainStart])[0],
+         " (start of curve ", chain[chainStart], ")");
   return chain;
+}
+
+// The closed chains a chained loop is made of, in order.
+template <class EndsOf>
+std::vector<std::vector<int>> closedChains(const std::vector<int>& loop, const EndsOf& endsOf) {
+  std::vector<std::vector<int>> chains;
+  for (int c : loop) {
+    if (chains.empty() || endsOf(chains.back().back())[1] == endsOf(chains.back().front())[0])
+      chains.emplace_back();
+    chains.back().push_back(c);
+  }
+  return chains;
 }
 
 }  // namespace
@@ -79,11 +98,14 @@ std::vector<std::vector<int>> GeoFactory::surfaceLoopsOf(int tag,
       fail(what, " ", tag, ": curve loop ", std::abs(l), " is not defined");
     // Holes run against the direction they were given in, as the built-in kernel of Gmsh
     // stores them (whatever that direction was).
-    loops.push_back(loopCurves(loops.empty() ? l : -l));
-    for (int c : loops.back())
+    const std::vector<int> curves = loopCurves(loops.empty() ? l : -l);
+    for (int c : curves)
       if (!curves_.contains(std::abs(c)))
         fail(what, " ", tag, ": curve ", std::abs(c), " of curve loop ", std::abs(l),
              " has been deleted");
+    for (std::vector<int>& chain :
+         closedChains(curves, [this](int c) { return curveEnds(c); }))
+      loops.push_back(std::move(chain));
   }
   return loops;
 }

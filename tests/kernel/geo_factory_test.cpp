@@ -193,6 +193,29 @@ TEST(GeoFactory, SurfaceWithHoleKeepsBothLoops) {
   EXPECT_NEAR(b.v.max - b.v.min, 1, 1e-15);
 }
 
+TEST(GeoFactory, OneLoopMayHoldTheBoundaryAndItsHoles) {
+  // As in Gmsh: the curves of a hole may follow the outer ones in the same curve loop.
+  GeoFactory geo;
+  addUnitSquare(geo);
+  geo.addPoint(5, {0.25, 0.25, 0}, 1);
+  geo.addPoint(6, {0.75, 0.25, 0}, 1);
+  geo.addPoint(7, {0.5, 0.75, 0}, 1);
+  geo.addLine(5, 5, 6);
+  geo.addLine(6, 6, 7);
+  geo.addLine(7, 7, 5);
+  geo.addCurveLoop(1, {2, 3, -6, 4, -5, 1, -7});
+  geo.addPlaneSurface(1, {1});
+  Model model;
+  geo.synchronize(model);
+  ASSERT_EQ(model.surface(1)->loops.size(), 2u);
+  EXPECT_EQ(model.surface(1)->loops[0], (std::vector<int>{2, 3, 4, 1}));
+  EXPECT_EQ(model.surface(1)->loops[1], (std::vector<int>{-6, -5, -7}));
+  // A chain that stops before closing is still an error.
+  EXPECT_EQ(errorOf([&] { geo.addCurveLoop(2, {1, 2, 3, 4, 5, 6}); }),
+            "Curve loop 2 does not close: gap between point 7 (end of curve 6) and point 5 "
+            "(start of curve 5)");
+}
+
 TEST(GeoFactory, MaxTagAndPhysicalGroups) {
   GeoFactory geo;
   addUnitCube(geo);
