@@ -213,6 +213,9 @@ MeshError::MeshError(EntityId e, const std::string& reason)
 void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
                   MessageSink& log) {
   mesh.clear();
+  if (options.elementOrder > 1)
+    log.warning("Mesh.ElementOrder " + std::to_string(options.elementOrder) +
+                ": high-order elements are not supported yet; the mesh is first order");
   SizeRules rules = SizeRules::from(model, options);
   // Full-quad recombination of every surface meshes twice as coarse, then splits each
   // element into quadrangles, which halves the sizes back.

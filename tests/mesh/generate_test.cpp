@@ -72,6 +72,21 @@ TEST(GenerateMesh, UnavailableSurfaceAlgorithmIsAWarning) {
   EXPECT_GT(mesh.elementCount(2), 0u);
 }
 
+TEST(GenerateMesh, HighOrderIsAWarningAndTheMeshStaysFirstOrder) {
+  const Model model = squareModel(0.1);
+  Mesh mesh;
+  RecordingSink log;
+  MeshOptions options;
+  options.elementOrder = 2;
+  generateMesh(model, options, 2, mesh, log);
+  ASSERT_FALSE(log.lines.empty());
+  EXPECT_EQ(log.lines[0],
+            "Mesh.ElementOrder 2: high-order elements are not supported yet; the mesh is first "
+            "order");
+  EXPECT_GT(mesh.elementCount(2), 0u);
+  EXPECT_TRUE(checkMesh(model, mesh).ok());
+}
+
 TEST(GenerateMesh, ReplacesThePreviousMesh) {
   const Model model = squareModel(0.1);
   Mesh mesh;
