@@ -52,7 +52,7 @@ using geomesh::grammar::unary;
 %nterm <std::string> assign_op compound_op
 %nterm <std::vector<std::string>> words
 %nterm <ast::ExprPtr> expr primary shape bare item option_path struct_def struct_name struct_ref
-%nterm <ast::ExprPtr> member_ref
+%nterm <ast::ExprPtr> member_ref periodic_tag
 %nterm <std::string> struct_append member_name
 %nterm <std::vector<ast::Attribute>> struct_members
 %nterm <ast::Attribute> struct_member
@@ -229,6 +229,14 @@ command:
 | words '=' expr ';' {
     CommandStmt c; c.words = std::move($1); c.op = "="; c.value = std::move($3);
     $$ = makeStmt(std::move(c), @1); }
+| words periodic_tag '{' items '}' '=' periodic_tag '{' items '}' ';' {
+    // The older periodicity form: Periodic Surface s {curves} = m {curves};
+    CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
+    auto slaveCurves = makeExpr(ExprKind::List, @3); slaveCurves->args = std::move($4);
+    auto masterCurves = makeExpr(ExprKind::List, @8); masterCurves->args = std::move($9);
+    c.args.push_back(std::move($2)); c.args.push_back(std::move(slaveCurves));
+    c.args.push_back(std::move($7)); c.args.push_back(std::move(masterCurves));
+    $$ = makeStmt(std::move(c), @1); }
 | words IDENT parts {
     CommandStmt c; c.words = std::move($1); c.colorName = std::move($2);
     auto s = makeExpr(ExprKind::Shape, @1); s->words = c.words; s->parts = std::move($3);
@@ -253,6 +261,12 @@ command:
     $$ = grammar::shapeCommand(std::move($1), @1);
     auto& c = std::get<CommandStmt>($$->node); c.op = "="; c.value = std::move($3);
     c.tail.push_back(TailItem{"", std::move($4)}); }
+;
+
+// A surface tag in the older periodicity form: a number (a name or a parenthesized
+// expression there would make the grammar ambiguous).
+periodic_tag:
+  NUMBER { $$ = makeExpr(ExprKind::Number, @1); $$->number = $1; }
 ;
 
 bare:

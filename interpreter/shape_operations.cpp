@@ -185,6 +185,14 @@ bool Interpreter::executeShapeCommand(const ast::CommandStmt& command,
       geo.coherence();
       return true;
     }
+    if (w == Words{"Periodic", "Surface"} && !command.shape && command.args.size() == 4) {
+      // The older form: Periodic Surface s {curves} = m {curves};
+      geo.setPeriodicByCurves(static_cast<int>(evaluateNumber(*command.args[0])),
+                              entityTags(*command.args[1]),
+                              static_cast<int>(evaluateNumber(*command.args[2])),
+                              entityTags(*command.args[3]));
+      return true;
+    }
     if (w == Words{"Delete", "Physicals"} && !command.shape) {
       // newreg keeps counting past the deleted groups, as in Gmsh.
       for (const auto& [id, group] : geo.physicalGroups())

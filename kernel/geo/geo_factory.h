@@ -113,6 +113,11 @@ class GeoFactory {
   // Periodic Curve/Surface{slaves} = {masters} + the transform taking masters to slaves.
   void setPeriodic(int dim, const std::vector<int>& slaves, const std::vector<int>& masters,
                    const AffineMap& map);
+  // Periodic Surface slave {curves} = master {curves}: the older form, without a transform. The
+  // transform is the rigid motion that takes each master curve's end points onto those of the
+  // slave curve given at the same place (negative tags: reversed curves).
+  void setPeriodicByCurves(int slave, const std::vector<int>& slaveCurves, int master,
+                           const std::vector<int>& masterCurves);
 
   // Geometry.Tolerance: coincident points and non-planar plane surfaces are detected
   // relative to this fraction of the model's size (the diagonal of its bounding box).

@@ -243,5 +243,51 @@ TEST(GeoEmbedding, RecordsEmbeddedEntitiesAndPeriodicity) {
   EXPECT_THROW(geo.embed(2, {1}, 1, 1), GeometryError);
 }
 
+// Two unit squares: surface 1 in the plane y = 0 from x = 1 to 2, surface 2 its image by a
+// quarter turn about the z axis (in the plane x = 0 from y = 1 to 2).
+void addSquarePair(GeoFactory& geo) {
+  const Vec3 corners[4] = {{1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}};
+  for (int k = 0; k < 4; ++k) {
+    geo.addPoint(k + 1, corners[k], 1);
+    geo.addPoint(k + 5, {-corners[k].y, corners[k].x, corners[k].z}, 1);
+  }
+  for (int k = 0; k < 4; ++k) {
+    geo.addLine(k + 1, k + 1, (k + 1) % 4 + 1);
+    geo.addLine(k + 5, k + 5, (k + 1) % 4 + 5);
+  }
+  geo.addCurveLoop(1, {1, 2, 3, 4});
+  geo.addCurveLoop(2, {5, 6, 7, 8});
+  geo.addPlaneSurface(1, {1});
+  geo.addPlaneSurface(2, {2});
+}
+
+TEST(GeoEmbedding, PeriodicSurfaceFromCurvesFindsTheRigidMotion) {
+  GeoFactory geo;
+  addSquarePair(geo);
+  geo.setPeriodicByCurves(2, {5, 6, 7, 8}, 1, {1, 2, 3, 4});
+  Model model;
+  geo.synchronize(model);
+  ASSERT_TRUE(model.surface(2)->periodic);
+  EXPECT_EQ(model.surface(2)->periodic->master, 1);
+  const std::vector<double> quarterTurn{0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  for (std::size_t k = 0; k < 16; ++k)
+    EXPECT_NEAR(model.surface(2)->periodic->affine[k], quarterTurn[k], 1e-12) << k;
+}
+
+TEST(GeoEmbedding, PeriodicSurfaceFromCurvesNeedsARigidMotion) {
+  GeoFactory geo;
+  addSquarePair(geo);
+  // A quadrangle that is not a unit square is no image of surface 1.
+  geo.addPoint(9, {0, 3, 1}, 1);
+  geo.addLine(9, 6, 9);
+  geo.addLine(10, 9, 8);
+  geo.addCurveLoop(3, {5, 9, 10, 8});
+  geo.addPlaneSurface(3, {3});
+  EXPECT_THROW(geo.setPeriodicByCurves(3, {5, 9, 10, 8}, 1, {1, 2, 3, 4}), GeometryError);
+  EXPECT_THROW(geo.setPeriodicByCurves(2, {5, 6, 7}, 1, {1, 2, 3, 4}), GeometryError);
+  // A master point cannot have two images.
+  EXPECT_THROW(geo.setPeriodicByCurves(2, {5, 5, 7, 8}, 1, {1, 2, 3, 4}), GeometryError);
+}
+
 }  // namespace
 }  // namespace geomesh
