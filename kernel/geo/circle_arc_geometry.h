@@ -19,6 +19,9 @@ class CircleArcGeometry final : public CurveGeometry {
   Vec3 secondDerivative(double t) const override;
 
   double angle() const { return angle_; }
+  Vec3 center() const { return center_; }
+  double startRadius() const { return startRadius_; }
+  double endRadius() const { return endRadius_; }
 
  private:
   Vec3 radial(double t) const;      // unit vector from the center at t

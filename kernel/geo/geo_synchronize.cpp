@@ -2,8 +2,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
+#include <utility>
 
 #include "kernel/geo/geo_factory.h"
+#include "kernel/geo/circle_arc_geometry.h"
 #include "kernel/geo/geo_detail.h"
 #include "kernel/geo/swept_surface_geometry.h"
 #include "kernel/plane_geometry.h"
@@ -49,6 +52,28 @@ std::shared_ptr<const SurfaceGeometry> GeoFactory::fitPlaneSurface(
   return plane;
 }
 
+namespace {
+
+// The centre and radius shared by sides that are all circle arcs of one sphere, if they are.
+std::optional<std::pair<Vec3, double>> commonSphere(
+    const std::vector<CoonsSurfaceGeometry::Side>& sides, double tolerance) {
+  std::optional<std::pair<Vec3, double>> sphere;
+  for (const CoonsSurfaceGeometry::Side& side : sides) {
+    const auto* arc = dynamic_cast<const CircleArcGeometry*>(side.curve.get());
+    // A half circle's chord passes through the centre: no patch of the sphere follows from it.
+    if (!arc || std::abs(arc->startRadius() - arc->endRadius()) > tolerance ||
+        arc->angle() > 0.99 * std::acos(-1.0))
+      return std::nullopt;
+    if (!sphere) sphere.emplace(arc->center(), arc->startRadius());
+    if (distance(arc->center(), sphere->first) > tolerance ||
+        std::abs(arc->startRadius() - sphere->second) > tolerance)
+      return std::nullopt;
+  }
+  return sphere;
+}
+
+}  // namespace
+
 std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
   if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops);
   const std::vector<int>& loop = s.loops.front();
@@ -64,8 +89,18 @@ std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface
   if (sides.size() != 3 && sides.size() != 4)
     fail("Surface ", s.tag, ": its loop has ", sides.size(),
          " curves; a non-plane surface needs 3 or 4");
+  if (const auto sphere = commonSphere(sides, absoluteTolerance())) {
+    std::vector<Vec3> corners;
+    for (const CoonsSurfaceGeometry::Side& side : sides) {
+      const Interval r = side.curve->range();
+      corners.push_back(side.curve->point(side.reversed ? r.max : r.min));
+    }
+    return std::make_shared<SphericalPatchGeometry>(std::move(corners), sphere->first,
+                                                    sphere->second);
+  }
   return std::make_shared<CoonsSurfaceGeometry>(std::move(sides));
 }
+
 
 void GeoFactory::synchronize(Model& model) const {
   model.clear();

@@ -139,6 +139,43 @@ Vec2 CoonsSurfaceGeometry::project(Vec3 p) const {
   return projectOnSurface(*this, p, sides_.size() == 3);
 }
 
+SphericalPatchGeometry::SphericalPatchGeometry(std::vector<Vec3> corners, Vec3 center,
+                                               double radius)
+    : corners_(std::move(corners)), center_(center), radius_(radius) {}
+
+Vec3 SphericalPatchGeometry::flatPoint(Vec2 uv) const {
+  const double u = uv.u, v = uv.v;
+  const std::vector<Vec3>& c = corners_;
+  if (c.size() == 3) return c[0] + u * (c[1] - c[0]) + v * (c[2] - c[1]);
+  return (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
+}
+
+SurfaceDerivatives SphericalPatchGeometry::flatDerivatives(Vec2 uv) const {
+  const double u = uv.u, v = uv.v;
+  const std::vector<Vec3>& c = corners_;
+  if (c.size() == 3) return {c[1] - c[0], c[2] - c[1]};
+  return {(1 - v) * (c[1] - c[0]) + v * (c[2] - c[3]), (1 - u) * (c[3] - c[0]) + u * (c[2] - c[1])};
+}
+
+Vec3 SphericalPatchGeometry::point(Vec2 uv) const {
+  const Vec3 q = flatPoint(uv) - center_;
+  return center_ + (radius_ / norm(q)) * q;
+}
+
+// d(r q/|q|) = (r/|q|) (dq - n (n . dq)), n = q/|q|.
+SurfaceDerivatives SphericalPatchGeometry::firstDerivatives(Vec2 uv) const {
+  const Vec3 q = flatPoint(uv) - center_;
+  const double length = norm(q);
+  const Vec3 n = q / length;
+  const SurfaceDerivatives d = flatDerivatives(uv);
+  auto radial = [&](Vec3 dq) { return (radius_ / length) * (dq - dot(n, dq) * n); };
+  return {radial(d.du), radial(d.dv)};
+}
+
+Vec2 SphericalPatchGeometry::project(Vec3 p) const {
+  return projectOnSurface(*this, p, corners_.size() == 3);
+}
+
 Vec2 projectOnSurface(const SurfaceGeometry& surface, Vec3 p, bool triangle) {
   const ParamBox box = surface.bounds();
   constexpr int kGrid = 16;

@@ -66,6 +66,30 @@ class CoonsSurfaceGeometry final : public SurfaceGeometry {
   std::array<Vec3, 4> corners_;
 };
 
+// A filling surface whose sides are all circle arcs about one centre with one radius: arcs of
+// great circles of that sphere. The surface is the patch of the sphere they bound: the flat
+// interpolation of its corners (affine over the triangle 0 <= v <= u <= 1 for three sides,
+// bilinear over [0, 1]^2 for four), projected from the centre onto the sphere. The straight
+// sides of that interpolation project exactly onto the arcs.
+class SphericalPatchGeometry final : public SurfaceGeometry {
+ public:
+  // corners: 3 or 4 points on the sphere, in the loop's order.
+  SphericalPatchGeometry(std::vector<Vec3> corners, Vec3 center, double radius);
+
+  ParamBox bounds() const override { return {{0, 1}, {0, 1}}; }
+  Vec3 point(Vec2 uv) const override;
+  SurfaceDerivatives firstDerivatives(Vec2 uv) const override;
+  Vec2 project(Vec3 p) const override;
+
+ private:
+  Vec3 flatPoint(Vec2 uv) const;
+  SurfaceDerivatives flatDerivatives(Vec2 uv) const;
+
+  std::vector<Vec3> corners_;
+  Vec3 center_;
+  double radius_;
+};
+
 // The parameters of the point of `surface` closest to p: the best of a grid of samples,
 // refined by Gauss-Newton steps, kept inside the bounds (and below the diagonal, v <= u, for
 // a triangular domain).

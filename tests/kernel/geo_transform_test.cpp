@@ -225,6 +225,44 @@ TEST(GeoSurfaces, TriangularFillingSurface) {
   EXPECT_NEAR(distance(d.dv, dv), 0, 1e-7);
 }
 
+// An octant of the unit sphere bounded by three quarter circles about the origin: the filling
+// surface lies on the sphere, as in Gmsh, rather than bulging out of it.
+TEST(GeoSurfaces, FillingSurfaceOfArcsOfOneSphereLiesOnIt) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 1);
+  geo.addPoint(2, {1, 0, 0}, 1);
+  geo.addPoint(3, {0, 1, 0}, 1);
+  geo.addPoint(4, {0, 0, 1}, 1);
+  geo.addCircleArc(1, 2, 1, 3);
+  geo.addCircleArc(2, 3, 1, 4);
+  geo.addCircleArc(3, 4, 1, 2);
+  geo.addCurveLoop(1, {1, 2, 3});
+  geo.addFillingSurface(1, {1});
+  Model model;
+  geo.synchronize(model);
+  const SurfaceGeometry& s = *model.surface(1)->geometry;
+  // Surface area over the triangle 0 <= v <= u <= 1, with v = u t: the midpoint rule in (u, t).
+  constexpr int kCells = 200;
+  double area = 0;
+  for (int i = 0; i < kCells; ++i)
+    for (int j = 0; j < kCells; ++j) {
+      const double u = (i + 0.5) / kCells, t = (j + 0.5) / kCells;
+      EXPECT_NEAR(norm(s.point({u, u * t})), 1, 1e-12);
+      const SurfaceDerivatives d = s.firstDerivatives({u, u * t});
+      area += norm(cross(d.du, d.dv)) * u / (kCells * kCells);
+    }
+  EXPECT_NEAR(area, std::acos(-1.0) / 2, 1e-3);
+  const double h = 1e-6;
+  const SurfaceDerivatives d = s.firstDerivatives({0.6, 0.2});
+  const Vec3 du = (s.point({0.6 + h, 0.2}) - s.point({0.6 - h, 0.2})) / (2 * h);
+  const Vec3 dv = (s.point({0.6, 0.2 + h}) - s.point({0.6, 0.2 - h})) / (2 * h);
+  EXPECT_NEAR(distance(d.du, du), 0, 1e-7);
+  EXPECT_NEAR(distance(d.dv, dv), 0, 1e-7);
+  const Vec2 uv = s.project(s.point({0.7, 0.3}));
+  EXPECT_NEAR(uv.u, 0.7, 1e-9);
+  EXPECT_NEAR(uv.v, 0.3, 1e-9);
+}
+
 TEST(GeoEmbedding, RecordsEmbeddedEntitiesAndPeriodicity) {
   GeoFactory geo;
   addUnitSquareSurface(geo);
