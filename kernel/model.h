@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/geo/extrusion_motion.h"
 #include "kernel/geometry.h"
 
 namespace geomesh {
@@ -29,11 +30,13 @@ struct ExtrusionLayers {
 
 // Where an extruded entity comes from: the entity one dimension lower that was swept to make
 // it (a curve from a point, a surface from a curve, a volume from a surface), its image at the
-// end of the sweep (`top`, same dimension as the source), and the layers.
+// end of the sweep (`top`, same dimension as the source), the layers, and the motion of the
+// sweep, which places the nodes of a layered mesh.
 struct ExtrusionRecord {
   int source = 0;
   ExtrusionLayers layers = {};
   int top = 0;
+  ExtrusionMotion motion = {};
 };
 
 // Periodic Curve/Surface{slave} = {master} Translate/Rotate{..}: the slave is the image of the

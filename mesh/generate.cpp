@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mesh/curve_mesher.h"
+#include "mesh/extrusion_mesher.h"
 #include "mesh/fields/size_field.h"
 #include "mesh/mesh_check.h"
 #include "mesh/periodic.h"
@@ -93,7 +94,8 @@ struct SurfaceStage {
 // closed triangulated shell: recombination is skipped there, with a warning.
 std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
   std::optional<double> angle = recombinationAngle(stage.model, stage.options, tag);
-  if (angle && stage.dim >= 3 && !stage.model.upward({2, tag}).empty()) {
+  if (angle && stage.dim >= 3 && !stage.model.upward({2, tag}).empty() &&
+      !boundsOnlyRecombinedExtrusions(stage.model, tag)) {
     stage.log.warning("surface " + std::to_string(tag) +
                       " bounds a volume meshed with tetrahedra: it is not recombined");
     angle.reset();
@@ -191,8 +193,10 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& no
   if (options.subdivisionAlgorithm == 2 || options.subdivisionAlgorithm == 3)
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");
+  const ExtrusionMesher extruded(model);
   for (const auto& [tag, surface] : model.surfaces())
-    meshOneSurface(stage, surface, mesh, nodeSizes);
+    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh, nodeSizes);
+  extruded.meshSurfaces(mesh, nodeSizes);
   copyPeriodicSurfaces(model, mesh, nodeSizes);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
@@ -203,6 +207,13 @@ bool hasQuadrangles(const Mesh& mesh) {
   for (const auto& entry : mesh.entities())
     if (entry.first.dim == 2 && entry.second.findBlock(ElementType::Quad4)) return true;
   return false;
+}
+
+bool hasOnlyTetrahedra(const Mesh& mesh) {
+  for (const auto& entry : mesh.entities())
+    for (const ElementBlock& block : entry.second.blocks)
+      if (dimension(block.type) == 3 && block.type != ElementType::Tet4) return false;
+  return true;
 }
 
 }  // namespace
@@ -226,8 +237,11 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   if (dim >= 1) {
     const StageTimer timer(1);
     const std::map<int, Periodicity> periodic = periodicCurves(model);
+    const ExtrusionMesher extruded(model);
     for (const auto& [tag, curve] : model.curves())
-      if (!periodic.contains(tag)) meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
+      if (!periodic.contains(tag) && !extruded.meshesCurve(tag))
+        meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
+    extruded.meshCurves(mesh, nodeSizes);
     copyPeriodicCurves(model, periodic, mesh, nodeSizes);
     timer.done(log, mesh.elementCount(1), "lines");
   }
@@ -244,8 +258,11 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   }
   if (dim >= 3) {
     const StageTimer timer(3);
-    for (const auto& [tag, volume] : model.volumes()) meshVolume(model, options, tag, mesh);
-    timer.done(log, mesh.elementCount(3), "tetrahedra");
+    const ExtrusionMesher extruded(model);
+    for (const auto& [tag, volume] : model.volumes())
+      if (!extruded.meshesVolume(tag)) meshVolume(model, options, tag, mesh);
+    extruded.meshVolumes(mesh);
+    timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
   }
 }
 

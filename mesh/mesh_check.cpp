@@ -1,6 +1,8 @@
 #include "mesh/mesh_check.h"
 
 #include <algorithm>
+#include <array>
+#include <initializer_list>
 #include <cmath>
 #include <cstdlib>
 #include <tuple>
@@ -316,20 +318,115 @@ class Checker {
 
   void checkVolumes() {
     for (const auto& [id, em] : mesh_.entities()) {
-      const ElementBlock* tets = em.findBlock(ElementType::Tet4);
-      if (!tets) continue;
+      if (id.dim != 3) continue;
+      bool inRange = true;
+      for (const ElementBlock& block : em.blocks)
+        for (NodeIndex n : block.nodes) inRange = inRange && n < mesh_.nodeCount();
+      if (!inRange) continue;  // reported already
       std::size_t reported = 0;
-      for (std::size_t e = 0; e < tets->size(); ++e) {
-        const auto n = tets->element(e);
-        if (n[0] >= mesh_.nodeCount() || n[1] >= mesh_.nodeCount() || n[2] >= mesh_.nodeCount() ||
-            n[3] >= mesh_.nodeCount())
-          continue;
-        const Vec3 a = mesh_.node(n[0]), b = mesh_.node(n[1]), c = mesh_.node(n[2]),
-                   d = mesh_.node(n[3]);
-        if (!(dot(cross(b - a, c - a), d - a) > 0) && reported++ < kMaxProblemsPerCheck)
-          problem(id, "tetrahedron " + std::to_string(e + 1) + " has a non-positive Jacobian");
-      }
+      for (const ElementBlock& block : em.blocks)
+        for (std::size_t e = 0; e < block.size(); ++e)
+          if (!positiveCorners(block.type, block.element(e)) && reported++ < kMaxProblemsPerCheck)
+            problem(id, std::string(elementName(block.type)) + " " + std::to_string(e + 1) +
+                            " has a non-positive Jacobian");
+      if (const ModelVolume* volume = model_.volume(id.tag)) checkVolumeFaces(*volume, em);
     }
+  }
+
+  // The Jacobian at every corner: the triple product of the corner's three edges, taken in
+  // the order that is positive for the reference element of the MSH format.
+  bool positiveCorners(ElementType type, std::span<const NodeIndex> n) const {
+    auto positive = [&](int corner, int a, int b, int c) {
+      const Vec3 o = mesh_.node(n[corner]);
+      return dot(cross(mesh_.node(n[a]) - o, mesh_.node(n[b]) - o), mesh_.node(n[c]) - o) > 0;
+    };
+    switch (type) {
+      case ElementType::Tet4: return positive(0, 1, 2, 3);
+      case ElementType::Prism6:
+        for (int i = 0; i < 3; ++i) {
+          const int next = (i + 1) % 3, previous = (i + 2) % 3;
+          if (!positive(i, next, previous, i + 3) || !positive(i + 3, previous + 3, next + 3, i))
+            return false;
+        }
+        return true;
+      case ElementType::Hex8:
+        for (int i = 0; i < 4; ++i) {
+          const int next = (i + 1) % 4, previous = (i + 3) % 4;
+          if (!positive(i, next, previous, i + 4) || !positive(i + 4, previous + 4, next + 4, i))
+            return false;
+        }
+        return true;
+      default: return true;
+    }
+  }
+
+  // Faces as their sorted nodes (the fourth UINT32_MAX for triangles).
+  using Face = std::array<NodeIndex, 4>;
+  static Face faceKey(std::initializer_list<NodeIndex> nodes) {
+    Face f{~NodeIndex{0}, ~NodeIndex{0}, ~NodeIndex{0}, ~NodeIndex{0}};
+    std::copy(nodes.begin(), nodes.end(), f.begin());
+    std::sort(f.begin(), f.end());
+    return f;
+  }
+
+  static void addElementFaces(ElementType type, std::span<const NodeIndex> n,
+                              std::vector<Face>& faces) {
+    if (type == ElementType::Tet4) {
+      for (int i = 0; i < 4; ++i)
+        faces.push_back(faceKey({n[i], n[(i + 1) % 4], n[(i + 2) % 4]}));
+    } else if (type == ElementType::Prism6) {
+      faces.push_back(faceKey({n[0], n[1], n[2]}));
+      faces.push_back(faceKey({n[3], n[4], n[5]}));
+      for (int i = 0; i < 3; ++i)
+        faces.push_back(faceKey({n[i], n[(i + 1) % 3], n[(i + 1) % 3 + 3], n[i + 3]}));
+    } else if (type == ElementType::Hex8) {
+      faces.push_back(faceKey({n[0], n[1], n[2], n[3]}));
+      faces.push_back(faceKey({n[4], n[5], n[6], n[7]}));
+      for (int i = 0; i < 4; ++i)
+        faces.push_back(faceKey({n[i], n[(i + 1) % 4], n[(i + 1) % 4 + 4], n[i + 4]}));
+    }
+  }
+
+  // Conformity with the boundary of volumes that have prisms or hexahedra: every face of the
+  // elements is shared by two of them or is a triangle or quadrangle of a boundary surface,
+  // and every face of the boundary surfaces is a face of one element.
+  void checkVolumeFaces(const ModelVolume& volume, const EntityMesh& em) {
+    if (!em.findBlock(ElementType::Prism6) && !em.findBlock(ElementType::Hex8)) return;
+    const EntityId id{3, volume.tag};
+    std::vector<Face> faces;
+    for (const ElementBlock& block : em.blocks)
+      for (std::size_t e = 0; e < block.size(); ++e)
+        addElementFaces(block.type, block.element(e), faces);
+    std::sort(faces.begin(), faces.end());
+    std::vector<Face> boundary;
+    for (const std::vector<int>& shell : volume.shells)
+      for (int s : shell)
+        if (const EntityMesh* sm = mesh_.find({2, std::abs(s)}))
+          for (const ElementBlock& block : sm->blocks)
+            for (std::size_t e = 0; e < block.size(); ++e) {
+              const auto n = block.element(e);
+              if (block.type == ElementType::Triangle3)
+                boundary.push_back(faceKey({n[0], n[1], n[2]}));
+              if (block.type == ElementType::Quad4)
+                boundary.push_back(faceKey({n[0], n[1], n[2], n[3]}));
+            }
+    std::sort(boundary.begin(), boundary.end());
+    std::size_t reported = 0;
+    auto report = [&](const std::string& what) {
+      if (reported++ < kMaxProblemsPerCheck) problem(id, what);
+    };
+    for (std::size_t k = 0; k < faces.size();) {
+      std::size_t run = k;
+      while (run < faces.size() && faces[run] == faces[k]) ++run;
+      const bool onBoundary = std::binary_search(boundary.begin(), boundary.end(), faces[k]);
+      if (run - k != (onBoundary ? 1u : 2u))
+        report("an element face at node " + nodeName(faces[k][0]) + " is shared by " +
+               std::to_string(run - k) + " elements" + (onBoundary ? " on the boundary" : ""));
+      k = run;
+    }
+    for (const Face& f : boundary)
+      if (!std::binary_search(faces.begin(), faces.end(), f))
+        report("a boundary face at " + nodeName(f[0]) + " is not a face of its elements");
   }
 
   // The diagonal of the box around all nodes (1 for an empty or one-node mesh).

@@ -106,6 +106,17 @@ QualityStats meshQuality(const Mesh& mesh, int dim, QualityMeasure measure) {
   return stats;
 }
 
+namespace {
+
+// Three tetrahedra of the prism a, b, c (bottom), d, e, f (top): exact when its sides are flat.
+double prismVolume(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e, Vec3 f) {
+  return (std::abs(tetVolume6(a, b, c, f)) + std::abs(tetVolume6(a, b, f, e)) +
+          std::abs(tetVolume6(a, e, f, d))) /
+         6;
+}
+
+}  // namespace
+
 double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIndex> nodes) {
   auto p = [&](int i) { return mesh.node(nodes[i]); };
   auto triangleArea = [](Vec3 a, Vec3 b, Vec3 c) { return 0.5 * norm(cross(b - a, c - a)); };
@@ -114,6 +125,10 @@ double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIn
     case ElementType::Triangle3: return triangleArea(p(0), p(1), p(2));
     case ElementType::Quad4: return triangleArea(p(0), p(1), p(2)) + triangleArea(p(0), p(2), p(3));
     case ElementType::Tet4: return std::abs(tetVolume6(p(0), p(1), p(2), p(3))) / 6;
+    case ElementType::Prism6: return prismVolume(p(0), p(1), p(2), p(3), p(4), p(5));
+    case ElementType::Hex8:
+      return prismVolume(p(0), p(1), p(2), p(4), p(5), p(6)) +
+             prismVolume(p(0), p(2), p(3), p(4), p(6), p(7));
     default: return 0;
   }
 }

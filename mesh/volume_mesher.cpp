@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "mesh/extrusion_mesher.h"
 #include "mesh/generate.h"
 #include "mesh/predicates.h"
 
@@ -454,6 +455,7 @@ void appendTetrahedra(const ModelVolume& volume, const BoundaryMesh& b, const te
 void meshVolume(const Model& model, const MeshOptions& options, int volumeTag, Mesh& mesh) {
   const ModelVolume* volume = model.volume(volumeTag);
   if (!volume) throw MeshError({3, volumeTag}, "the volume does not exist");
+  if (isLayeredExtrusion(*volume)) return;  // structured: meshed by ExtrusionMesher
   BoundaryMesh boundary = collectBoundary(*volume, mesh);
   std::vector<Vec3> xyz;
   for (NodeIndex n : boundary.nodes) xyz.push_back(mesh.node(n));

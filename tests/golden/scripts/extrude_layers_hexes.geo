@@ -1,0 +1,11 @@
+// A structured square swept into a cube of 4 layers of hexahedra.
+Point(1) = {0, 0, 0, 0.25};
+Point(2) = {1, 0, 0, 0.25};
+Point(3) = {1, 1, 0, 0.25};
+Point(4) = {0, 1, 0, 0.25};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Surface{1};
+Recombine Surface{1};
+Extrude{0, 0, 1}{Surface{1}; Layers{4}; Recombine;}

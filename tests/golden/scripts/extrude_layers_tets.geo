@@ -1,0 +1,10 @@
+// A structured triangulated square swept without Recombine: 3 tetrahedra per prism.
+Point(1) = {0, 0, 0, 0.25};
+Point(2) = {1, 0, 0, 0.25};
+Point(3) = {1, 1, 0, 0.25};
+Point(4) = {0, 1, 0, 0.25};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Surface{1};
+Extrude{0, 0, 1}{Surface{1}; Layers{3};}
