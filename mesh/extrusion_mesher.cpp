@@ -507,32 +507,66 @@ class Columns {
   std::map<NodeIndex, std::vector<NodeIndex>> columns_;
 };
 
+void append(EntityMesh& em, ElementType type, std::span<const NodeIndex> nodes) {
+  ElementBlock& block = em.block(type);
+  block.nodes.insert(block.nodes.end(), nodes.begin(), nodes.end());
+}
+
+// The prism a, b, c (bottom), d, e, f (top), positive; where vertical edges collapse on a
+// rotation axis, the pyramid (one edge) or tetrahedron (two) that is left.
+void addPrism(const Mesh& mesh, std::array<NodeIndex, 6> v, EntityMesh& em) {
+  int collapsed = 0, still = 0, moving = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (v[i] == v[i + 3]) ++collapsed, still = i;
+    else moving = i;
+  }
+  if (collapsed == 0) {
+    if (signedVolume(mesh, v[0], v[1], v[2], v[3]) < 0) {
+      std::swap(v[1], v[2]);
+      std::swap(v[4], v[5]);
+    }
+    append(em, ElementType::Prism6, v);
+  } else if (collapsed == 1) {
+    const int b = (still + 1) % 3, c = (still + 2) % 3;
+    std::array<NodeIndex, 5> pyramid{v[b], v[c], v[c + 3], v[b + 3], v[still]};
+    if (signedVolume(mesh, pyramid[0], pyramid[1], pyramid[3], pyramid[4]) < 0)
+      std::swap(pyramid[1], pyramid[3]);
+    append(em, ElementType::Pyramid5, pyramid);
+  } else if (collapsed == 2) {
+    std::array<NodeIndex, 4> tet{v[0], v[1], v[2], v[moving + 3]};
+    if (signedVolume(mesh, tet[0], tet[1], tet[2], tet[3]) < 0) std::swap(tet[1], tet[2]);
+    append(em, ElementType::Tet4, tet);
+  }
+}
+
 // Prisms over the source triangles (Recombine) or three tetrahedra each.
 void sweepTriangles(const Sweep& s, const ElementBlock& triangles, std::size_t layers,
                     bool recombine, Columns& columns, EntityMesh& em) {
-  const EntityId id = em.entity;
   for (std::size_t e = 0; e < triangles.size(); ++e) {
     const auto t = triangles.element(e);
-    const std::vector<NodeIndex>*c[3] = {&columns.of(t[0]), &columns.of(t[1]), &columns.of(t[2])};
+    const std::vector<NodeIndex>* c[3] = {&columns.of(t[0]), &columns.of(t[1]),
+                                          &columns.of(t[2])};
     for (std::size_t k = 0; k < layers; ++k) {
-      std::array<NodeIndex, 6> prism{(*c[0])[k],     (*c[1])[k],     (*c[2])[k],
-                                     (*c[0])[k + 1], (*c[1])[k + 1], (*c[2])[k + 1]};
-      if (!recombine) {
+      const std::array<NodeIndex, 6> prism{(*c[0])[k],     (*c[1])[k],     (*c[2])[k],
+                                           (*c[0])[k + 1], (*c[1])[k + 1], (*c[2])[k + 1]};
+      if (recombine)
+        addPrism(s.mesh, prism, em);
+      else
         splitPrism(s.mesh, prism, em.block(ElementType::Tet4).nodes);
-        continue;
-      }
-      for (int v = 0; v < 3; ++v)
-        if (prism[v] == prism[v + 3])
-          throw MeshError(id, "a prism collapses on the rotation axis; extrude without "
-                              "Recombine to get tetrahedra there");
-      if (signedVolume(s.mesh, prism[0], prism[1], prism[2], prism[3]) < 0) {
-        std::swap(prism[1], prism[2]);
-        std::swap(prism[4], prism[5]);
-      }
-      ElementBlock& prisms = em.block(ElementType::Prism6);
-      prisms.nodes.insert(prisms.nodes.end(), prism.begin(), prism.end());
     }
   }
+}
+
+// A hexahedron whose side on a rotation axis collapses: the prism that is left. Other
+// collapses (a single corner on the axis) leave no element of the MSH format.
+void addCollapsedHexahedron(const Mesh& mesh, const std::array<NodeIndex, 8>& hex, int collapsed,
+                            int first, EntityMesh& em) {
+  const int a = first == 0 && hex[3] == hex[7] ? 3 : first, b = (a + 1) % 4;
+  if (collapsed != 2 || hex[b] != hex[b + 4])
+    throw MeshError(em.entity, "a hexahedron touches the rotation axis at a corner only; "
+                               "give the source surface triangles there");
+  const int c = (a + 2) % 4, d = (a + 3) % 4;
+  addPrism(mesh, {hex[a], hex[d], hex[d + 4], hex[b], hex[c], hex[c + 4]}, em);
 }
 
 // Hexahedra over the source quadrangles; Recombine is required.
@@ -548,11 +582,15 @@ void sweepQuadrangles(const Sweep& s, const ElementBlock& quads, std::size_t lay
                                           &columns.of(q[2]), &columns.of(q[3])};
     for (std::size_t k = 0; k < layers; ++k) {
       std::array<NodeIndex, 8> hex;
+      int collapsed = 0, first = -1;
       for (int v = 0; v < 4; ++v) {
         hex[v] = (*c[v])[k];
         hex[v + 4] = (*c[v])[k + 1];
-        if (hex[v] == hex[v + 4])
-          throw MeshError(id, "a hexahedron collapses on the rotation axis");
+        if (hex[v] == hex[v + 4]) ++collapsed, first = first < 0 ? v : first;
+      }
+      if (collapsed > 0) {
+        addCollapsedHexahedron(s.mesh, hex, collapsed, first, em);
+        continue;
       }
       if (signedVolume(s.mesh, hex[0], hex[1], hex[3], hex[4]) < 0) {
         std::swap(hex[1], hex[3]);

@@ -356,6 +356,10 @@ class Checker {
             return false;
         }
         return true;
+      case ElementType::Pyramid5:
+        for (int i = 0; i < 4; ++i)
+          if (!positive(i, (i + 1) % 4, (i + 3) % 4, 4)) return false;
+        return true;
       default: return true;
     }
   }
@@ -379,6 +383,9 @@ class Checker {
       faces.push_back(faceKey({n[3], n[4], n[5]}));
       for (int i = 0; i < 3; ++i)
         faces.push_back(faceKey({n[i], n[(i + 1) % 3], n[(i + 1) % 3 + 3], n[i + 3]}));
+    } else if (type == ElementType::Pyramid5) {
+      faces.push_back(faceKey({n[0], n[1], n[2], n[3]}));
+      for (int i = 0; i < 4; ++i) faces.push_back(faceKey({n[i], n[(i + 1) % 4], n[4]}));
     } else if (type == ElementType::Hex8) {
       faces.push_back(faceKey({n[0], n[1], n[2], n[3]}));
       faces.push_back(faceKey({n[4], n[5], n[6], n[7]}));
@@ -387,11 +394,13 @@ class Checker {
     }
   }
 
-  // Conformity with the boundary of volumes that have prisms or hexahedra: every face of the
-  // elements is shared by two of them or is a triangle or quadrangle of a boundary surface,
-  // and every face of the boundary surfaces is a face of one element.
+  // Conformity with the boundary of volumes that have prisms, pyramids or hexahedra: every
+  // face of the elements is shared by two of them or is a triangle or quadrangle of a boundary
+  // surface, and every face of the boundary surfaces is a face of one element.
   void checkVolumeFaces(const ModelVolume& volume, const EntityMesh& em) {
-    if (!em.findBlock(ElementType::Prism6) && !em.findBlock(ElementType::Hex8)) return;
+    if (!em.findBlock(ElementType::Prism6) && !em.findBlock(ElementType::Hex8) &&
+        !em.findBlock(ElementType::Pyramid5))
+      return;
     const EntityId id{3, volume.tag};
     std::vector<Face> faces;
     for (const ElementBlock& block : em.blocks)

@@ -29,8 +29,8 @@ struct MeshCheckReport {
 //    (du x dv) and not flat; each interior edge shared by exactly two triangles, the boundary
 //    edges exactly the segments of the boundary curves (embedded curves: two triangles each);
 //    triangles only use nodes of the surface and its closure; nodes on the surface;
-//  - volumes: tetrahedra, prisms and hexahedra with a positive Jacobian at every corner; in
-//    volumes with prisms or hexahedra, each element face shared by two elements or equal to a
+//  - volumes: tetrahedra, prisms, pyramids and hexahedra with a positive Jacobian at every
+//    corner; in volumes with any but tetrahedra, each element face shared by two elements or equal to a
 //    triangle or quadrangle of a boundary surface, and each of those a face of an element;
 //  - periodic entities: each node paired with a master node is that node's affine image.
 MeshCheckReport checkMesh(const Model& model, const Mesh& mesh);

@@ -126,6 +126,10 @@ double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIn
     case ElementType::Quad4: return triangleArea(p(0), p(1), p(2)) + triangleArea(p(0), p(2), p(3));
     case ElementType::Tet4: return std::abs(tetVolume6(p(0), p(1), p(2), p(3))) / 6;
     case ElementType::Prism6: return prismVolume(p(0), p(1), p(2), p(3), p(4), p(5));
+    case ElementType::Pyramid5:
+      return (std::abs(tetVolume6(p(0), p(1), p(2), p(4))) +
+              std::abs(tetVolume6(p(0), p(2), p(3), p(4)))) /
+             6;
     case ElementType::Hex8:
       return prismVolume(p(0), p(1), p(2), p(4), p(5), p(6)) +
              prismVolume(p(0), p(2), p(3), p(4), p(6), p(7));

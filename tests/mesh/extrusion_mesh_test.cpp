@@ -88,6 +88,9 @@ std::map<Face, int> volumeFaces(const Mesh& mesh) {
           ++faces[faceKey({n[3], n[4], n[5]})];
           for (int i = 0; i < 3; ++i)
             ++faces[faceKey({n[i], n[(i + 1) % 3], n[(i + 1) % 3 + 3], n[i + 3]})];
+        } else if (b.type == ElementType::Pyramid5) {
+          ++faces[faceKey({n[0], n[1], n[2], n[3]})];
+          for (int i = 0; i < 4; ++i) ++faces[faceKey({n[i], n[(i + 1) % 4], n[4]})];
         } else if (b.type == ElementType::Hex8) {
           ++faces[faceKey({n[0], n[1], n[2], n[3]})];
           ++faces[faceKey({n[4], n[5], n[6], n[7]})];
@@ -334,12 +337,45 @@ TEST(ExtrusionMesh, WithoutLayersTheMeshIsUnstructured) {
   EXPECT_NEAR(measure(m.mesh, 3), 1.0, 1e-9);
 }
 
-TEST(ExtrusionMesh, PrismsCollapsingOnTheAxisAreAnErrorNamingTheVolume) {
+TEST(ExtrusionMesh, PrismsOnTheAxisCollapseIntoPyramidsAndTetrahedra) {
   Meshed m;
   GeoFactory geo = unitSquare(0.25);  // its side x = 0 lies on the axis
   geo.extrude({{2, 1}}, ExtrusionMotion::rotate({0, 1, 0}, {0, 0, 0}, kPi / 2),
-              layers({4}, {1}, true));
+              layers({6}, {1}, true));
   geo.synchronize(m.model);
+  m.model.meshConstraints().transfiniteSurfaces[1] = TransfiniteSurface{};
+  meshModel(m, 3);
+  // 32 triangles: 4 with a side on the axis (tetrahedra), 4 with a corner (pyramids).
+  EXPECT_EQ(count(m.mesh, ElementType::Tet4), 4u * 6);
+  EXPECT_EQ(count(m.mesh, ElementType::Pyramid5), 4u * 6);
+  EXPECT_EQ(count(m.mesh, ElementType::Prism6), 24u * 6);
+  expectCheckOk(m.model, m.mesh);
+  expectConformingVolumes(m.model, m.mesh);
+}
+
+TEST(ExtrusionMesh, HexahedraOnTheAxisCollapseIntoPrisms) {
+  Meshed m;
+  GeoFactory geo = unitSquare(0.25);
+  geo.extrude({{2, 1}}, ExtrusionMotion::rotate({0, 1, 0}, {0, 0, 0}, kPi / 2),
+              layers({6}, {1}, true));
+  geo.synchronize(m.model);
+  m.model.meshConstraints().transfiniteSurfaces[1] = TransfiniteSurface{};
+  m.model.meshConstraints().recombinedSurfaces[1] = 45;
+  meshModel(m, 3);
+  EXPECT_EQ(count(m.mesh, ElementType::Prism6), 4u * 6);
+  EXPECT_EQ(count(m.mesh, ElementType::Hex8), 12u * 6);
+  expectCheckOk(m.model, m.mesh);
+  expectConformingVolumes(m.model, m.mesh);
+}
+
+TEST(ExtrusionMesh, HexahedraTouchingTheAxisAtACornerAreAnErrorNamingTheVolume) {
+  Meshed m;
+  GeoFactory geo = unitSquare(0.25);  // only its corner (0, 0, 0) lies on the axis
+  geo.extrude({{2, 1}}, ExtrusionMotion::rotate({1, -1, 1}, {0, 0, 0}, kPi / 2),
+              layers({6}, {1}, true));
+  geo.synchronize(m.model);
+  m.model.meshConstraints().transfiniteSurfaces[1] = TransfiniteSurface{};
+  m.model.meshConstraints().recombinedSurfaces[1] = 45;
   try {
     meshModel(m, 3);
     FAIL() << "no error";
