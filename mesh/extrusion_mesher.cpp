@@ -205,47 +205,6 @@ void splitPrism(const Mesh& mesh, std::array<NodeIndex, 6> v, std::vector<NodeIn
   }
 }
 
-}  // namespace
-
-bool isLayeredExtrusion(const ModelVolume& volume) { return hasLayers(volume.extrusion); }
-
-bool boundsOnlyRecombinedExtrusions(const Model& model, int surfaceTag) {
-  const std::vector<int> volumes = model.upward({2, surfaceTag});
-  return !volumes.empty() && std::all_of(volumes.begin(), volumes.end(), [&](int tag) {
-    const ModelVolume* v = model.volume(tag);
-    return v && hasLayers(v->extrusion) && v->extrusion->layers.recombine;
-  });
-}
-
-ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
-  const BoundingBox box = model.boundingBox();
-  const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
-  tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
-  for (const auto& [tag, surface] : model.surfaces())
-    if (hasLayers(surface.extrusion) && model.curve(surface.extrusion->top))
-      topCurves_[surface.extrusion->top] = &*surface.extrusion;
-  for (const auto& [tag, volume] : model.volumes())
-    if (hasLayers(volume.extrusion) && model.surface(volume.extrusion->top))
-      topSurfaces_[volume.extrusion->top] = &*volume.extrusion;
-}
-
-bool ExtrusionMesher::meshesCurve(int tag) const {
-  const ModelCurve* curve = model_.curve(tag);
-  return topCurves_.contains(tag) || (curve && hasLayers(curve->extrusion));
-}
-
-bool ExtrusionMesher::meshesSurface(int tag) const {
-  const ModelSurface* surface = model_.surface(tag);
-  return topSurfaces_.contains(tag) || (surface && hasLayers(surface->extrusion));
-}
-
-bool ExtrusionMesher::meshesVolume(int tag) const {
-  const ModelVolume* volume = model_.volume(tag);
-  return volume && hasLayers(volume->extrusion);
-}
-
-namespace {
-
 // What every sweep reads.
 struct Sweep {
   const Model& model;
@@ -436,34 +395,6 @@ bool isMeshed(const Mesh& mesh, EntityId e) {
   return em && em->elementCount() > 0;
 }
 
-}  // namespace
-
-void ExtrusionMesher::meshCurves(Mesh& mesh, std::vector<double>& nodeSizes) const {
-  const Sweep s{model_, tolerance_, mesh};
-  for (const auto& [tag, curve] : model_.curves())
-    if (hasLayers(curve.extrusion) && !topCurves_.contains(tag))
-      meshSweptCurve(s, curve, nodeSizes);
-  meshImages(
-      topCurves_, 1, [&](int source) { return isMeshed(mesh, {1, source}); },
-      [&](int tag, const ExtrusionRecord& record) {
-        meshImageCurve(s, *model_.curve(tag), record, nodeSizes);
-      });
-}
-
-void ExtrusionMesher::meshSurfaces(Mesh& mesh, std::vector<double>& nodeSizes) const {
-  const Sweep s{model_, tolerance_, mesh};
-  for (const auto& [tag, surface] : model_.surfaces())
-    if (hasLayers(surface.extrusion) && !topSurfaces_.contains(tag))
-      meshSweptSurface(s, surface, nodeSizes);
-  meshImages(
-      topSurfaces_, 2, [&](int source) { return isMeshed(mesh, {2, source}); },
-      [&](int tag, const ExtrusionRecord& record) {
-        meshImageSurface(s, *model_.surface(tag), record, nodeSizes);
-      });
-}
-
-namespace {
-
 // The nodes of each source node's sweep, layer by layer: the boundary's nodes where the sweep
 // meets it (found by position), new nodes of the volume elsewhere.
 class Columns {
@@ -620,6 +551,67 @@ void meshSweptVolume(const Sweep& s, const ModelVolume& volume) {
 }
 
 }  // namespace
+
+bool isLayeredExtrusion(const ModelVolume& volume) { return hasLayers(volume.extrusion); }
+
+bool boundsOnlyRecombinedExtrusions(const Model& model, int surfaceTag) {
+  const std::vector<int> volumes = model.upward({2, surfaceTag});
+  return !volumes.empty() && std::all_of(volumes.begin(), volumes.end(), [&](int tag) {
+    const ModelVolume* v = model.volume(tag);
+    return v && hasLayers(v->extrusion) && v->extrusion->layers.recombine;
+  });
+}
+
+ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
+  const BoundingBox box = model.boundingBox();
+  const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
+  tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
+  for (const auto& [tag, surface] : model.surfaces())
+    if (hasLayers(surface.extrusion) && model.curve(surface.extrusion->top))
+      topCurves_[surface.extrusion->top] = &*surface.extrusion;
+  for (const auto& [tag, volume] : model.volumes())
+    if (hasLayers(volume.extrusion) && model.surface(volume.extrusion->top))
+      topSurfaces_[volume.extrusion->top] = &*volume.extrusion;
+}
+
+bool ExtrusionMesher::meshesCurve(int tag) const {
+  const ModelCurve* curve = model_.curve(tag);
+  return topCurves_.contains(tag) || (curve && hasLayers(curve->extrusion));
+}
+
+bool ExtrusionMesher::meshesSurface(int tag) const {
+  const ModelSurface* surface = model_.surface(tag);
+  return topSurfaces_.contains(tag) || (surface && hasLayers(surface->extrusion));
+}
+
+bool ExtrusionMesher::meshesVolume(int tag) const {
+  const ModelVolume* volume = model_.volume(tag);
+  return volume && hasLayers(volume->extrusion);
+}
+
+void ExtrusionMesher::meshCurves(Mesh& mesh, std::vector<double>& nodeSizes) const {
+  const Sweep s{model_, tolerance_, mesh};
+  for (const auto& [tag, curve] : model_.curves())
+    if (hasLayers(curve.extrusion) && !topCurves_.contains(tag))
+      meshSweptCurve(s, curve, nodeSizes);
+  meshImages(
+      topCurves_, 1, [&](int source) { return isMeshed(mesh, {1, source}); },
+      [&](int tag, const ExtrusionRecord& record) {
+        meshImageCurve(s, *model_.curve(tag), record, nodeSizes);
+      });
+}
+
+void ExtrusionMesher::meshSurfaces(Mesh& mesh, std::vector<double>& nodeSizes) const {
+  const Sweep s{model_, tolerance_, mesh};
+  for (const auto& [tag, surface] : model_.surfaces())
+    if (hasLayers(surface.extrusion) && !topSurfaces_.contains(tag))
+      meshSweptSurface(s, surface, nodeSizes);
+  meshImages(
+      topSurfaces_, 2, [&](int source) { return isMeshed(mesh, {2, source}); },
+      [&](int tag, const ExtrusionRecord& record) {
+        meshImageSurface(s, *model_.surface(tag), record, nodeSizes);
+      });
+}
 
 void ExtrusionMesher::meshVolumes(Mesh& mesh) const {
   const Sweep s{model_, tolerance_, mesh};
