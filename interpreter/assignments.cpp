@@ -119,9 +119,9 @@ void Interpreter::assignElements(const ast::LValue& target, const std::string& n
   for (std::size_t i = 0; i < indices.size(); ++i) {
     if (indices[i] < 0) fail(target.index->loc, "negative index in '" + name + "'");
     if (indices[i] >= kMaxListSize)
-      fail(target.index->loc, "index " + std::to_string(static_cast<long long>(indices[i])) +
+      fail(target.index->loc, "index " + std::to_string(clampedInteger<long long>(indices[i])) +
                                   " is beyond the largest list size");
-    const auto index = static_cast<std::size_t>(indices[i]);
+    const auto index = clampedInteger<std::size_t>(indices[i]);
     const std::size_t from = value.size() == 1 ? 0 : i;
     if (list.isText()) {
       if (index >= list.strings().size()) list.strings().resize(index + 1);

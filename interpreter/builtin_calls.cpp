@@ -45,10 +45,10 @@ Value Interpreter::callFunction(const ast::Expr& call) {
     if (call.args.empty())
       return list.isText() ? Value::stringList(list.strings()) : Value::list(list.numbers());
     const double index = evaluateNumber(*call.args[0]);
-    if (index < 0 || static_cast<std::size_t>(index) >= list.size())
-      fail(call.args[0]->loc, "index " + std::to_string(static_cast<long long>(index)) +
+    if (index < 0 || clampedInteger<std::size_t>(index) >= list.size())
+      fail(call.args[0]->loc, "index " + std::to_string(clampedInteger<long long>(index)) +
                                   " out of range for '" + name + "'");
-    const auto at = static_cast<std::size_t>(index);
+    const auto at = clampedInteger<std::size_t>(index);
     return list.isText() ? Value::string(list.strings()[at]) : Value::number(list.numbers()[at]);
   }
   std::vector<std::string> known(functionNames().begin(), functionNames().end());
@@ -79,7 +79,7 @@ std::optional<Value> Interpreter::callListFunction(const ast::Expr& call) {
     const double a = evaluateNumber(*call.args[0]), b = evaluateNumber(*call.args[1]);
     const double count = evaluateNumber(*call.args[2]);
     if (count > 10'000'000) fail(call.args[2]->loc, "'" + name + "' asks for too many values");
-    const int n = static_cast<int>(count);
+    const int n = clampedInteger<int>(count);
     return Value::list(name == "LinSpace" ? linSpace(a, b, n) : logSpace(a, b, n));
   }
   if (name == "Find") {

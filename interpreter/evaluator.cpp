@@ -84,7 +84,7 @@ std::string Interpreter::resolveName(const ast::Name& name) {
       result += "_" + value.strings()[0];
       continue;
     }
-    result += "_" + std::to_string(static_cast<long long>(evaluateNumber(*suffix)));
+    result += "_" + std::to_string(clampedInteger<long long>(evaluateNumber(*suffix)));
   }
   return result;
 }
@@ -119,12 +119,12 @@ Value Interpreter::elementValue(const Expr& expr) {
   std::vector<double> numbers;
   std::vector<std::string> strings;
   for (double i : index.numbers()) {
-    if (i < 0 || static_cast<std::size_t>(i) >= list.size())
-      fail(expr.args[0]->loc, "index " + std::to_string(static_cast<long long>(i)) +
+    if (i < 0 || clampedInteger<std::size_t>(i) >= list.size())
+      fail(expr.args[0]->loc, "index " + std::to_string(clampedInteger<long long>(i)) +
                                   " out of range for '" + name + "' (" +
                                   std::to_string(list.size()) + " item" +
                                   (list.size() == 1 ? "" : "s") + ")");
-    const auto at = static_cast<std::size_t>(i);
+    const auto at = clampedInteger<std::size_t>(i);
     if (list.isText())
       strings.push_back(list.strings()[at]);
     else

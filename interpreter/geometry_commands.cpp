@@ -34,7 +34,7 @@ std::vector<int> Interpreter::entityTags(const ast::Expr& list) {
   for (double x : evaluateNumbers(list)) {
     if (x != std::floor(x))
       fail(list.loc, "entity tag " + std::to_string(x) + " is not an integer");
-    tags.push_back(static_cast<int>(x));
+    tags.push_back(clampedInteger<int>(x));
   }
   return tags;
 }
@@ -45,7 +45,7 @@ int Interpreter::entityTag(const ast::CommandStmt& command, const SourceLocation
   const double tag = evaluateNumber(*command.args[0]);
   if (tag != std::floor(tag) || tag <= 0)
     fail(command.args[0]->loc, "tag of '" + joined(command.words) + "' must be a positive integer");
-  return static_cast<int>(tag);
+  return clampedInteger<int>(tag);
 }
 
 bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceLocation& where) {
@@ -154,7 +154,7 @@ void Interpreter::definePhysical(const ast::CommandStmt& command, int dim,
   int tag = 0;
   if (first.kind() == Value::Kind::String) {
     name = first.strings()[0];
-    tag = command.args.size() == 2 ? static_cast<int>(evaluateNumber(*command.args[1]))
+    tag = command.args.size() == 2 ? clampedInteger<int>(evaluateNumber(*command.args[1]))
                                    : physicalTagFor(dim, name);
   } else {
     tag = entityTag(command, where);

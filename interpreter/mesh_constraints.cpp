@@ -80,7 +80,7 @@ void Interpreter::defineTransfiniteCurve(const ast::CommandStmt& command,
   TransfiniteCurve law;
   const double nodes = evaluateNumber(*command.value);
   if (!(nodes >= 2)) fail(command.value->loc, "a transfinite curve needs at least 2 nodes");
-  law.nodes = static_cast<int>(nodes);
+  law.nodes = clampedInteger<int>(nodes);
   for (const ast::TailItem& item : command.tail) {
     if (item.word == "Using" && !item.value) continue;
     const auto kind = lawNamed(item.word);

@@ -25,7 +25,7 @@ bool Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceL
     for (double x : evaluateNumbers(*item)) {
       if (x != std::floor(x) || x <= 0)
         fail(item->loc, "point tag " + std::to_string(x) + " is not a positive integer");
-      points.push_back(static_cast<int>(x));
+      points.push_back(clampedInteger<int>(x));
     }
   }
   // Like Gmsh, tags of no point are skipped (scripts often give a whole range of tags).

@@ -122,7 +122,7 @@ void Interpreter::meshNow(const ast::Expr& dimension, const SourceLocation& wher
     return;
   }
   try {
-    session_.generate(static_cast<int>(dim));
+    session_.generate(clampedInteger<int>(dim));
   } catch (const MeshError& error) {
     // Point at the statement that defined the entity when the script did, else at Mesh.
     fail(session_.origin(error.entity).value_or(where), error.what());

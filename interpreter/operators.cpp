@@ -18,7 +18,8 @@ double arithmetic(const std::string& op, double a, double b) {
   if (op == "*") return a * b;
   if (op == "/") return a / b;
   if (op == "^") return std::pow(a, b);
-  return static_cast<double>(static_cast<long long>(a) % static_cast<long long>(b));
+  const long long x = clampedInteger<long long>(a), y = clampedInteger<long long>(b);
+  return y == -1 ? 0.0 : static_cast<double>(x % y);  // the lowest value % -1 overflows
 }
 
 double comparison(const std::string& op, double a, double b) {
@@ -61,7 +62,7 @@ Value Interpreter::binaryValue(const ast::Expr& expr) {
   const auto& a = left.numbers();
   const auto& b = right.numbers();
   for (double divisor : b) {
-    if (op == "%" && static_cast<long long>(divisor) == 0) fail(expr.loc, "modulo by zero");
+    if (op == "%" && clampedInteger<long long>(divisor) == 0) fail(expr.loc, "modulo by zero");
     if (op == "/" && divisor == 0) fail(expr.loc, "division by zero");
   }
   if (left.kind() == Value::Kind::Number && right.kind() == Value::Kind::Number)

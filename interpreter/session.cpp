@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "interpreter/interpreter.h"
+#include "interpreter/value.h"
 #include "mesh/generate.h"
 #include "mesh/io/msh_reader.h"
 
@@ -51,18 +52,18 @@ MeshOptions Session::meshOptions() const {
   m.sizeFactor = o.number("Mesh.MeshSizeFactor");
   m.sizeFromPoints = o.number("Mesh.MeshSizeFromPoints") != 0;
   m.sizeExtendFromBoundary = o.number("Mesh.MeshSizeExtendFromBoundary") != 0;
-  m.algorithm2D = static_cast<int>(o.number("Mesh.Algorithm"));
-  m.algorithm3D = static_cast<int>(o.number("Mesh.Algorithm3D"));
-  m.smoothing = static_cast<int>(o.number("Mesh.Smoothing"));
-  m.elementOrder = static_cast<int>(o.number("Mesh.ElementOrder"));
-  m.numThreads = static_cast<int>(o.number("General.NumThreads"));
+  m.algorithm2D = clampedInteger<int>(o.number("Mesh.Algorithm"));
+  m.algorithm3D = clampedInteger<int>(o.number("Mesh.Algorithm3D"));
+  m.smoothing = clampedInteger<int>(o.number("Mesh.Smoothing"));
+  m.elementOrder = clampedInteger<int>(o.number("Mesh.ElementOrder"));
+  m.numThreads = clampedInteger<int>(o.number("General.NumThreads"));
   m.randomFactor = o.number("Mesh.RandomFactor");
   m.recombineAll = o.number("Mesh.RecombineAll") != 0;
-  m.recombinationAlgorithm = static_cast<int>(o.number("Mesh.RecombinationAlgorithm"));
+  m.recombinationAlgorithm = clampedInteger<int>(o.number("Mesh.RecombinationAlgorithm"));
   m.sizeFromCurvature = o.number("Mesh.MeshSizeFromCurvature");
-  m.minCircleNodes = static_cast<int>(o.number("Mesh.MinimumCircleNodes"));
-  m.minCurveNodes = static_cast<int>(o.number("Mesh.MinimumCurveNodes"));
-  m.subdivisionAlgorithm = static_cast<int>(o.number("Mesh.SubdivisionAlgorithm"));
+  m.minCircleNodes = clampedInteger<int>(o.number("Mesh.MinimumCircleNodes"));
+  m.minCurveNodes = clampedInteger<int>(o.number("Mesh.MinimumCurveNodes"));
+  m.subdivisionAlgorithm = clampedInteger<int>(o.number("Mesh.SubdivisionAlgorithm"));
   return m;
 }
 

@@ -124,10 +124,10 @@ ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
     if (item->words != Words{"Layers"} || item->parts.empty()) continue;
     const auto& values = item->parts[0].items;
     if (values.size() == 1) {
-      layers.elements.push_back(static_cast<int>(evaluateNumber(*values[0])));
+      layers.elements.push_back(clampedInteger<int>(evaluateNumber(*values[0])));
       layers.heights.push_back(1);
     } else if (values.size() == 2) {
-      for (double n : evaluateNumbers(*values[0])) layers.elements.push_back(static_cast<int>(n));
+      for (double n : evaluateNumbers(*values[0])) layers.elements.push_back(clampedInteger<int>(n));
       layers.heights = evaluateNumbers(*values[1]);
     } else {
       fail(item->loc, "Layers takes {n} or {{n1, n2, ...}, {h1, h2, ...}}");
@@ -187,9 +187,9 @@ bool Interpreter::executeShapeCommand(const ast::CommandStmt& command,
     }
     if (w == Words{"Periodic", "Surface"} && !command.shape && command.args.size() == 4) {
       // The older form: Periodic Surface s {curves} = m {curves};
-      geo.setPeriodicByCurves(static_cast<int>(evaluateNumber(*command.args[0])),
+      geo.setPeriodicByCurves(clampedInteger<int>(evaluateNumber(*command.args[0])),
                               entityTags(*command.args[1]),
-                              static_cast<int>(evaluateNumber(*command.args[2])),
+                              clampedInteger<int>(evaluateNumber(*command.args[2])),
                               entityTags(*command.args[3]));
       return true;
     }
@@ -252,7 +252,7 @@ Value Interpreter::physicalQuery(const ast::Expr& expr, int dim) {
     return Value::list(std::move(result));
   }
   for (double tag : evaluateNumbers(items)) {
-    auto it = groups.find(EntityId{dim, static_cast<int>(tag)});
+    auto it = groups.find(EntityId{dim, clampedInteger<int>(tag)});
     if (it != groups.end())
       result.insert(result.end(), it->second.entities.begin(), it->second.entities.end());
   }

@@ -129,11 +129,11 @@ Value Interpreter::memberValue(const ast::Expr& ref) {
   if (ref.kind == ast::ExprKind::MemberItem) {
     const double at = evaluateNumber(*ref.args[0]);
     if (at < 0 || at >= static_cast<double>(value.size()))
-      fail(ref.args[0]->loc, "index " + std::to_string(static_cast<long long>(at)) +
+      fail(ref.args[0]->loc, "index " + std::to_string(clampedInteger<long long>(at)) +
                                  " out of range for member '" + ref.text + "' of Struct '" +
                                  structName(ref) + "' (" + std::to_string(value.size()) +
                                  " item" + (value.size() == 1 ? "" : "s") + ")");
-    index = static_cast<std::size_t>(at);
+    index = clampedInteger<std::size_t>(at);
   } else if (value.size() == 0) {
     fail(ref.loc, "member '" + ref.text + "' of Struct '" + structName(ref) + "' is empty");
   }
@@ -215,7 +215,7 @@ std::optional<Value> Interpreter::callStructFunction(const ast::Expr& call) {
     if (auto it = structSpaces_.find(space); it != structSpaces_.end())
       for (const auto& [name, data] : it->second.structs)
         if (data.tag == tag) return Value::string(name);
-    warn(call.loc, "no Struct of tag " + std::to_string(static_cast<long long>(tag)) +
+    warn(call.loc, "no Struct of tag " + std::to_string(clampedInteger<long long>(tag)) +
                        (space.empty() ? "" : " in namespace '" + space + "'"));
     return Value::string("");
   }

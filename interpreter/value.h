@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "stdlib/clamped_integer.h"
+
 namespace geomesh {
 
 // What an expression evaluates to: a number, a list of numbers, a string or a list of

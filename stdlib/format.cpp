@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "stdlib/clamped_integer.h"
+
 namespace geomesh {
 
 namespace {
@@ -35,13 +37,13 @@ std::string convert(std::string spec, char conversion, const FormatArgument& arg
   switch (conversion) {
     case 'd': case 'i':
       return printOne(spec + "ll" + conversion,
-                      static_cast<long long>(asNumber(argument, spec + conversion)));
+                      clampedInteger<long long>(asNumber(argument, spec + conversion)));
     case 'o': case 'u': case 'x': case 'X':
       return printOne(spec + "ll" + conversion,
                       static_cast<unsigned long long>(
-                          static_cast<long long>(asNumber(argument, spec + conversion))));
+                          clampedInteger<long long>(asNumber(argument, spec + conversion))));
     case 'c':
-      return printOne(spec + conversion, static_cast<int>(asNumber(argument, spec + conversion)));
+      return printOne(spec + conversion, clampedInteger<int>(asNumber(argument, spec + conversion)));
     case 's':
       if (const std::string* s = std::get_if<std::string>(&argument))
         return printOne(spec + conversion, s->c_str());

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "stdlib/clamped_integer.h"
 #include "stdlib/edit_distance.h"
 
 namespace geomesh {
@@ -97,7 +98,7 @@ std::string optionListingLine(const OptionRegistry::Option& option) {
   if (option.type == OptionType::String) {
     line += "\"" + option.text + "\"";
   } else if (option.type == OptionType::Color) {
-    const auto packed = static_cast<long long>(option.number);
+    const auto packed = clampedInteger<long long>(option.number);
     std::snprintf(buffer, sizeof buffer, "{%lld,%lld,%lld}", (packed >> 16) & 255,
                   (packed >> 8) & 255, packed & 255);
     line += buffer;

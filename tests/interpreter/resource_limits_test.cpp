@@ -22,6 +22,24 @@ TEST(ResourceLimits, DefaultLoopLimitStopsARunawayLoop) {
       << error;
 }
 
+// Numbers far outside the integers' range, where a script asks for an integer: clamped, never
+// an overflow (the sanitizer build checks that no conversion overflows).
+TEST(ResourceLimits, HugeNumbersWhereIntegersAreExpected) {
+  EXPECT_EQ(printed("Printf(\"%g\", 4.4e60 % 7);"), "0\n");
+  EXPECT_EQ(printed("Printf(\"%g\", -1e300 % -1);"), "0\n");
+  EXPECT_EQ(printed("Printf(\"%g\", 7 % 1e300);"), "7\n");
+  EXPECT_NE(firstLineOf("a[] = {1, 2};\nb = a[1e300];").find("out of range"), std::string::npos);
+  EXPECT_NE(firstLineOf("a[] = {1, 2};\nb = a[-1e300];").find("out of range"), std::string::npos);
+  EXPECT_EQ(printed("x~{1e300} = 3;\nPrintf(\"%g\", x~{1e300});"), "3\n");
+  // Tags and layer counts beyond the integers: a diagnostic or a result, never a crash.
+  for (const char* script :
+       {"Point(1e300) = {0, 0, 0};", "Point(-1e300) = {0, 0, 0};",
+        "Point(1) = {0, 0, 0};\nPoint(2) = {1, 0, 0};\nLine(1) = {1, 2};\n"
+        "Extrude {0, 1, 0} { Curve{1}; Layers{1e300}; }",
+        "Mesh.Algorithm = 1e300;\nMesh.MinimumCircleNodes = -1e300;"})
+    EXPECT_NO_THROW(errorOf(script)) << script;
+}
+
 TEST(ResourceLimits, MacroDepthLimitIsAnOption) {
   const std::string script =
       "General.MaxMacroDepth = 5;\nn = 0;\nMacro m\n  n++;\n  If (n < LIMIT)\n    Call m;\n  EndIf\n"
