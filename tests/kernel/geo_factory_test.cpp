@@ -171,15 +171,20 @@ TEST(GeoFactory, OpenSurfaceLoopIsRejected) {
             "Surface loop 2 is not closed: curve 4 bounds 1 of its surfaces (surface 1)");
 }
 
-TEST(GeoFactory, SurfaceWithHoleKeepsBothLoops) {
-  GeoFactory geo;
-  addUnitSquare(geo);
+// Points 5 to 7 and lines 5 to 7: a triangle inside the unit square, counter-clockwise.
+void addTriangleHole(GeoFactory& geo) {
   geo.addPoint(5, {0.25, 0.25, 0}, 1);
   geo.addPoint(6, {0.75, 0.25, 0}, 1);
   geo.addPoint(7, {0.5, 0.75, 0}, 1);
   geo.addLine(5, 5, 6);
   geo.addLine(6, 6, 7);
   geo.addLine(7, 7, 5);
+}
+
+TEST(GeoFactory, SurfaceWithHoleKeepsBothLoops) {
+  GeoFactory geo;
+  addUnitSquare(geo);
+  addTriangleHole(geo);
   geo.addCurveLoop(1, {1, 2, 3, 4});
   geo.addCurveLoop(2, {5, 6, 7});
   geo.addPlaneSurface(1, {1, 2});
@@ -197,12 +202,7 @@ TEST(GeoFactory, OneLoopMayHoldTheBoundaryAndItsHoles) {
   // As in Gmsh: the curves of a hole may follow the outer ones in the same curve loop.
   GeoFactory geo;
   addUnitSquare(geo);
-  geo.addPoint(5, {0.25, 0.25, 0}, 1);
-  geo.addPoint(6, {0.75, 0.25, 0}, 1);
-  geo.addPoint(7, {0.5, 0.75, 0}, 1);
-  geo.addLine(5, 5, 6);
-  geo.addLine(6, 6, 7);
-  geo.addLine(7, 7, 5);
+  addTriangleHole(geo);
   geo.addCurveLoop(1, {2, 3, -6, 4, -5, 1, -7});
   geo.addPlaneSurface(1, {1});
   Model model;

@@ -167,6 +167,16 @@ TEST(GeoTransform, UndefinedShapeIsNamed) {
   }
 }
 
+// The surface's first derivatives at uv against central differences.
+void expectDerivativesMatch(const SurfaceGeometry& s, Vec2 uv, double tolerance) {
+  const double h = 1e-6;
+  const SurfaceDerivatives d = s.firstDerivatives(uv);
+  const Vec3 du = (s.point({uv.u + h, uv.v}) - s.point({uv.u - h, uv.v})) / (2 * h);
+  const Vec3 dv = (s.point({uv.u, uv.v + h}) - s.point({uv.u, uv.v - h})) / (2 * h);
+  EXPECT_NEAR(distance(d.du, du), 0, tolerance);
+  EXPECT_NEAR(distance(d.dv, dv), 0, tolerance);
+}
+
 TEST(GeoSurfaces, FillingSurfaceInterpolatesItsBoundary) {
   GeoFactory geo;
   geo.addPoint(1, {0, 0, 0}, 1);
@@ -186,12 +196,7 @@ TEST(GeoSurfaces, FillingSurfaceInterpolatesItsBoundary) {
   const Vec2 uv = s.project(p);
   EXPECT_NEAR(uv.u, 0.3, 1e-9);
   EXPECT_NEAR(uv.v, 0.6, 1e-9);
-  const double h = 1e-6;
-  const SurfaceDerivatives d = s.firstDerivatives({0.3, 0.6});
-  const Vec3 du = (s.point({0.3 + h, 0.6}) - s.point({0.3 - h, 0.6})) / (2 * h);
-  const Vec3 dv = (s.point({0.3, 0.6 + h}) - s.point({0.3, 0.6 - h})) / (2 * h);
-  EXPECT_NEAR(distance(d.du, du), 0, 1e-8);
-  EXPECT_NEAR(distance(d.dv, dv), 0, 1e-8);
+  expectDerivativesMatch(s, {0.3, 0.6}, 1e-8);
 }
 
 // Gmsh's parametrization: the triangle 0 <= v <= u <= 1, an affine map for straight sides.
@@ -217,12 +222,7 @@ TEST(GeoSurfaces, TriangularFillingSurface) {
   const Vec2 uv = s.project(s.point({0.7, 0.3}));
   EXPECT_NEAR(uv.u, 0.7, 1e-9);
   EXPECT_NEAR(uv.v, 0.3, 1e-9);
-  const double h = 1e-6;
-  const SurfaceDerivatives d = s.firstDerivatives({0.6, 0.2});
-  const Vec3 du = (s.point({0.6 + h, 0.2}) - s.point({0.6 - h, 0.2})) / (2 * h);
-  const Vec3 dv = (s.point({0.6, 0.2 + h}) - s.point({0.6, 0.2 - h})) / (2 * h);
-  EXPECT_NEAR(distance(d.du, du), 0, 1e-7);
-  EXPECT_NEAR(distance(d.dv, dv), 0, 1e-7);
+  expectDerivativesMatch(s, {0.6, 0.2}, 1e-7);
 }
 
 // An octant of the unit sphere bounded by three quarter circles about the origin: the filling
@@ -252,12 +252,7 @@ TEST(GeoSurfaces, FillingSurfaceOfArcsOfOneSphereLiesOnIt) {
       area += norm(cross(d.du, d.dv)) * u / (kCells * kCells);
     }
   EXPECT_NEAR(area, std::acos(-1.0) / 2, 1e-3);
-  const double h = 1e-6;
-  const SurfaceDerivatives d = s.firstDerivatives({0.6, 0.2});
-  const Vec3 du = (s.point({0.6 + h, 0.2}) - s.point({0.6 - h, 0.2})) / (2 * h);
-  const Vec3 dv = (s.point({0.6, 0.2 + h}) - s.point({0.6, 0.2 - h})) / (2 * h);
-  EXPECT_NEAR(distance(d.du, du), 0, 1e-7);
-  EXPECT_NEAR(distance(d.dv, dv), 0, 1e-7);
+  expectDerivativesMatch(s, {0.6, 0.2}, 1e-7);
   const Vec2 uv = s.project(s.point({0.7, 0.3}));
   EXPECT_NEAR(uv.u, 0.7, 1e-9);
   EXPECT_NEAR(uv.v, 0.3, 1e-9);
