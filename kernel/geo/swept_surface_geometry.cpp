@@ -68,12 +68,17 @@ Vec3 CoonsSurfaceGeometry::deviationDerivative(std::size_t i, double s) const {
 
 namespace {
 
-// Where each side's deviation is read for a point (u, v) of the triangle: s0 = (u - v) /
-// (1 - v), s1 = v / u, s2 = (1 - u) / (1 - u + v); each is the point's own fraction on its
-// side and an end of the side (where the deviation vanishes) on the two other sides.
+// Where each side's deviation is read for a point (u, v) of the triangle, and how much of it is
+// taken. With the barycentric coordinates b0 = 1 - u, b1 = u - v, b2 = v of the corners,
+// side i (from corner i to corner i + 1) is read at s_i = b_{i+1} / (b_i + b_{i+1}), its own
+// fraction on it, an end of it on the two other sides; its deviation is scaled by 1 - b_k,
+// k the opposite corner, which is 1 on the side and 0 at that corner, so that the surface is
+// continuous there whatever the direction it is approached from.
 struct TriangleFractions {
   double s[3];
-  Vec2 ds[3];  // derivatives with respect to u and v
+  Vec2 ds[3];      // derivatives of s with respect to u and v
+  double w[3];     // the scale 1 - b_k
+  Vec2 dw[3];      // its derivatives
 };
 
 TriangleFractions triangleFractions(double u, double v) {
@@ -86,6 +91,9 @@ TriangleFractions triangleFractions(double u, double v) {
   f.ds[1] = u > kTiny ? Vec2{-v / (u * u), 1 / u} : Vec2{};
   f.s[2] = d2 > kTiny ? (1 - u) / d2 : 0;
   f.ds[2] = d2 > kTiny ? Vec2{-v / (d2 * d2), -(1 - u) / (d2 * d2)} : Vec2{};
+  f.w[0] = d0, f.dw[0] = {0, -1};  // opposite corner 2: b2 = v
+  f.w[1] = u, f.dw[1] = {1, 0};    // opposite corner 0: b0 = 1 - u
+  f.w[2] = d2, f.dw[2] = {-1, 1};  // opposite corner 1: b1 = u - v
   return f;
 }
 
@@ -94,7 +102,7 @@ TriangleFractions triangleFractions(double u, double v) {
 Vec3 CoonsSurfaceGeometry::trianglePoint(Vec2 uv) const {
   const TriangleFractions f = triangleFractions(uv.u, uv.v);
   Vec3 p = corners_[0] + uv.u * (corners_[1] - corners_[0]) + uv.v * (corners_[2] - corners_[1]);
-  for (std::size_t i = 0; i < 3; ++i) p += deviation(i, f.s[i]);
+  for (std::size_t i = 0; i < 3; ++i) p += f.w[i] * deviation(i, f.s[i]);
   return p;
 }
 
@@ -102,9 +110,9 @@ SurfaceDerivatives CoonsSurfaceGeometry::triangleDerivatives(Vec2 uv) const {
   const TriangleFractions f = triangleFractions(uv.u, uv.v);
   SurfaceDerivatives d{corners_[1] - corners_[0], corners_[2] - corners_[1]};
   for (std::size_t i = 0; i < 3; ++i) {
-    const Vec3 dd = deviationDerivative(i, f.s[i]);
-    d.du += f.ds[i].u * dd;
-    d.dv += f.ds[i].v * dd;
+    const Vec3 dev = deviation(i, f.s[i]), dd = deviationDerivative(i, f.s[i]);
+    d.du += f.dw[i].u * dev + f.w[i] * f.ds[i].u * dd;
+    d.dv += f.dw[i].v * dev + f.w[i] * f.ds[i].v * dd;
   }
   return d;
 }

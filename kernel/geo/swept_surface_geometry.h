@@ -38,7 +38,8 @@ class SweptSurfaceGeometry final : public SurfaceGeometry {
 // Three sides: over the triangle 0 <= v <= u <= 1 (Gmsh's domain), running along v = 0, then
 // u = 1, then the diagonal back to the origin; the surface is the affine map of the corners
 // (as in Gmsh) plus each side's deviation from its chord, carried along lines that keep the
-// other sides exact (inside, curved sides blend differently from Gmsh's formula).
+// other sides exact and faded out towards the opposite corner (inside, curved sides blend
+// differently from Gmsh's formula).
 class CoonsSurfaceGeometry final : public SurfaceGeometry {
  public:
   struct Side {

@@ -225,6 +225,38 @@ TEST(GeoSurfaces, TriangularFillingSurface) {
   expectDerivativesMatch(s, {0.6, 0.2}, 1e-7);
 }
 
+// Three curved sides: the surface is continuous at its corners, whatever the direction it
+// approaches them from (a side's deviation fades out towards the opposite corner).
+TEST(GeoSurfaces, TriangularFillingSurfaceIsContinuousAtItsCorners) {
+  GeoFactory geo;
+  geo.addPoint(1, {0, 0, 0}, 1);
+  geo.addPoint(2, {2, 0, 0}, 1);
+  geo.addPoint(3, {0, 1, 0}, 1);
+  geo.addPoint(4, {0, 0, 0.5}, 1);
+  geo.addEllipseArc(1, 2, 1, 2, 3);
+  geo.addEllipseArc(2, 3, 1, 3, 4);
+  geo.addEllipseArc(3, 4, 1, 2, 2);
+  geo.addCurveLoop(1, {1, 2, 3});
+  geo.addFillingSurface(1, {1});
+  Model model;
+  geo.synchronize(model);
+  const SurfaceGeometry& s = *model.surface(1)->geometry;
+  const Vec2 corners[3] = {{0, 0}, {1, 0}, {1, 1}};
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 c = corners[k];
+    const Vec3 at = s.point(c);
+    // Towards the triangle's inside from corner k, along rays between its two sides.
+    const Vec2 a = corners[(k + 1) % 3], b = corners[(k + 2) % 3];
+    for (double t : {0.1, 0.5, 0.9}) {
+      const Vec2 dir{(1 - t) * (a.u - c.u) + t * (b.u - c.u),
+                     (1 - t) * (a.v - c.v) + t * (b.v - c.v)};
+      const double e = 1e-7;
+      EXPECT_LT(distance(s.point({c.u + e * dir.u, c.v + e * dir.v}), at), 1e-5) << k << " " << t;
+    }
+  }
+  expectDerivativesMatch(s, {0.6, 0.2}, 1e-6);
+}
+
 // An octant of the unit sphere bounded by three quarter circles about the origin: the filling
 // surface lies on the sphere, as in Gmsh, rather than bulging out of it.
 TEST(GeoSurfaces, FillingSurfaceOfArcsOfOneSphereLiesOnIt) {
