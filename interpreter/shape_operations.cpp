@@ -127,7 +127,8 @@ ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
       layers.elements.push_back(clampedInteger<int>(evaluateNumber(*values[0])));
       layers.heights.push_back(1);
     } else if (values.size() == 2) {
-      for (double n : evaluateNumbers(*values[0])) layers.elements.push_back(clampedInteger<int>(n));
+      for (double n : evaluateNumbers(*values[0]))
+        layers.elements.push_back(clampedInteger<int>(n));
       layers.heights = evaluateNumbers(*values[1]);
     } else {
       fail(item->loc, "Layers takes {n} or {{n1, n2, ...}, {h1, h2, ...}}");

@@ -72,7 +72,8 @@ std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
     std::string s = str(0);
     auto from = clampedInteger<std::size_t>(std::max(0.0, evaluateNumber(*args[1])));
     std::size_t count = std::string::npos;
-    if (args.size() > 2) count = clampedInteger<std::size_t>(std::max(0.0, evaluateNumber(*args[2])));
+    if (args.size() > 2)
+      count = clampedInteger<std::size_t>(std::max(0.0, evaluateNumber(*args[2])));
     return Value::string(from < s.size() ? s.substr(from, count) : std::string());
   }
   if (name == "StrLen") { arity(1, 1); return Value::number(static_cast<double>(str(0).size())); }

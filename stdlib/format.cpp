@@ -43,7 +43,8 @@ std::string convert(std::string spec, char conversion, const FormatArgument& arg
                       static_cast<unsigned long long>(
                           clampedInteger<long long>(asNumber(argument, spec + conversion))));
     case 'c':
-      return printOne(spec + conversion, clampedInteger<int>(asNumber(argument, spec + conversion)));
+      return printOne(spec + conversion,
+                      clampedInteger<int>(asNumber(argument, spec + conversion)));
     case 's':
       if (const std::string* s = std::get_if<std::string>(&argument))
         return printOne(spec + conversion, s->c_str());

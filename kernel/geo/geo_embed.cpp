@@ -94,7 +94,8 @@ void GeoFactory::setPeriodicByCurves(int slave, const std::vector<int>& slaveCur
     }
   }
   std::vector<std::pair<Vec3, Vec3>> pairs;
-  for (const auto& [from, to] : imageOf) pairs.emplace_back(points_.at(from).xyz, points_.at(to).xyz);
+  for (const auto& [from, to] : imageOf)
+    pairs.emplace_back(points_.at(from).xyz, points_.at(to).xyz);
   const std::optional<AffineMap> map = rigidMotion(pairs, absoluteTolerance());
   if (!map)
     fail("Periodic Surface ", slave, ": its curves are not the image of those of surface ", master,
