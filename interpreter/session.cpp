@@ -64,6 +64,8 @@ MeshOptions Session::meshOptions() const {
   m.minCircleNodes = clampedInteger<int>(o.number("Mesh.MinimumCircleNodes"));
   m.minCurveNodes = clampedInteger<int>(o.number("Mesh.MinimumCurveNodes"));
   m.subdivisionAlgorithm = clampedInteger<int>(o.number("Mesh.SubdivisionAlgorithm"));
+  m.optimize = o.number("Mesh.Optimize") != 0;
+  m.optimizeThreshold = o.number("Mesh.OptimizeThreshold");
   return m;
 }
 

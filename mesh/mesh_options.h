@@ -21,6 +21,8 @@ struct MeshOptions {
   bool recombineAll = false;       // Mesh.RecombineAll
   int recombinationAlgorithm = 1;  // Mesh.RecombinationAlgorithm (0 simple, 1 blossom)
   int subdivisionAlgorithm = 0;    // Mesh.SubdivisionAlgorithm (1: all quadrangles)
+  bool optimize = true;            // Mesh.Optimize: improve tetrahedra below the threshold
+  double optimizeThreshold = 0.3;  // Mesh.OptimizeThreshold (gamma)
 };
 
 }  // namespace geomesh

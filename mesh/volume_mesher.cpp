@@ -15,6 +15,7 @@
 #include "mesh/extrusion_mesher.h"
 #include "mesh/generate.h"
 #include "mesh/predicates.h"
+#include "mesh/tet_optimizer.h"
 
 namespace geomesh {
 
@@ -472,6 +473,7 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag, M
   tetgenio output;
   tetrahedralizeBoundary(*volume, input, output);
   appendTetrahedra(*volume, boundary, output, mesh);
+  if (options.optimize) optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold);
 }
 
 }  // namespace geomesh
