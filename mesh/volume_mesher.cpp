@@ -411,10 +411,11 @@ std::string tetgenFailure(int code) {
 }
 
 void tetrahedralizeBoundary(const ModelVolume& volume, TetgenInput& input, tetgenio& output) {
-  // p: boundary given as facets; Y: no node added on it; q1.4/12: radius-edge ratio and
-  // smallest dihedral angle (degrees) bounds, which remove most slivers for a few percent more
-  // tetrahedra; m: sizes at the points; z: zero-based numbering; Q: quiet.
-  char switches[] = "pYq1.4/12mzQ";
+  // p: boundary given as facets; Y: no node added on it; q2.0: radius-edge ratio bound (a
+  // tighter one or a dihedral angle bound adds 5-20% tetrahedra, and the slivers left near the
+  // boundary are the optimizer's work either way); m: sizes at the points; z: zero-based
+  // numbering; Q: quiet.
+  char switches[] = "pYq2.0mzQ";
   try {
     tetrahedralize(switches, &input.io(), &output);
   } catch (int code) {
