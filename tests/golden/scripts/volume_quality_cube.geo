@@ -1,0 +1,13 @@
+// Unit cube extruded from a square, meshed with tetrahedra at size 0.3: the optimizer must
+// leave no tetrahedron below the quality threshold.
+Point(1) = {0, 0, 0, 0.3};
+Point(2) = {1, 0, 0, 0.3};
+Point(3) = {1, 1, 0, 0.3};
+Point(4) = {0, 1, 0, 0.3};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1:4};
+Plane Surface(1) = {1};
+Extrude {0, 0, 1} { Surface{1}; }
