@@ -267,8 +267,7 @@ bool TetOptimizer::smoothNode(int v) {
 }
 
 bool TetOptimizer::improveTet(int t) {
-  static constexpr std::array<std::array<int, 2>, 6> kEdges{
-      {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+  static constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   const Tet tet = tets_[t];
   for (const auto& e : kEdges)
     if (removeEdge(tet[e[0]], tet[e[1]])) return true;
