@@ -69,6 +69,7 @@ Value Interpreter::binaryValue(const ast::Expr& expr) {
     return Value::number(isArithmetic(op) ? arithmetic(op, a[0], b[0])
                                           : comparison(op, a[0], b[0]));
   if (!isArithmetic(op)) fail(expr.loc, "'" + op + "' compares numbers, not lists");
+  if (a.empty() || b.empty()) fail(expr.loc, "'" + op + "' on an empty list");
   if (a.size() != b.size() && a.size() != 1 && b.size() != 1)
     fail(expr.loc, "'" + op + "' on lists of different lengths (" + std::to_string(a.size()) +
                        " and " + std::to_string(b.size()) + ")");

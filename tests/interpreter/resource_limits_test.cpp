@@ -31,6 +31,9 @@ TEST(ResourceLimits, HugeNumbersWhereIntegersAreExpected) {
   EXPECT_NE(firstLineOf("a[] = {1, 2};\nb = a[1e300];").find("out of range"), std::string::npos);
   EXPECT_NE(firstLineOf("a[] = {1, 2};\nb = a[-1e300];").find("out of range"), std::string::npos);
   EXPECT_EQ(printed("x~{1e300} = 3;\nPrintf(\"%g\", x~{1e300});"), "3\n");
+  // Arithmetic with an empty list (found by fuzzing) is an error, not a read past its end.
+  EXPECT_NE(firstLineOf("e[] = {};\nx = e[] + 1;").find("'+' on an empty list"), std::string::npos);
+  EXPECT_NE(firstLineOf("e[] = {};\nx = 2 ^ e[];").find("'^' on an empty list"), std::string::npos);
   // Tags and layer counts beyond the integers: a diagnostic or a result, never a crash.
   for (const char* script :
        {"Point(1e300) = {0, 0, 0};", "Point(-1e300) = {0, 0, 0};",
