@@ -31,12 +31,13 @@ struct ExtrusionLayers {
 // Where an extruded entity comes from: the entity one dimension lower that was swept to make
 // it (a curve from a point, a surface from a curve, a volume from a surface), its image at the
 // end of the sweep (`top`, same dimension as the source), the layers, and the motion of the
-// sweep, which places the nodes of a layered mesh.
+// sweep, which places the nodes of a layered mesh. The motion is shared: every entity has
+// room for a record, and most are not extruded.
 struct ExtrusionRecord {
   int source = 0;
   ExtrusionLayers layers = {};
   int top = 0;
-  ExtrusionMotion motion = {};
+  std::shared_ptr<const ExtrusionMotion> motion = nullptr;
 };
 
 // Periodic Curve/Surface{slave} = {master} Translate/Rotate{..}: the slave is the image of the

@@ -14,7 +14,7 @@ namespace geomesh {
 namespace {
 
 bool hasLayers(const std::optional<ExtrusionRecord>& record) {
-  return record && !record->layers.elements.empty();
+  return record && record->motion && !record->layers.elements.empty();
 }
 
 // The normalized heights of the layer boundaries, from 0 to 1: layer i adds elements[i] equal
@@ -226,7 +226,7 @@ void meshSweptCurve(const Sweep& s, const ModelCurve& curve, std::vector<double>
   std::vector<double> parameters;
   const Interval range = curve.geometry ? curve.geometry->range() : Interval{};
   for (std::size_t k = 1; k + 1 < f.size(); ++k) {
-    const Vec3 p = record.motion.apply(source->xyz, f[k]);
+    const Vec3 p = record.motion->apply(source->xyz, f[k]);
     chain.push_back(s.mesh.addNode(p));
     nodeSizes.push_back(nodeSizes[sourceNode]);
     const double along = fromStart ? f[k] : 1 - f[k];
@@ -258,7 +258,7 @@ void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord
   std::vector<NodeIndex> image;
   std::vector<Vec3> interior;
   for (std::size_t i = 0; i < chain.size(); ++i) {
-    const Vec3 p = record.motion.apply(s.mesh.node(chain[i]), 1);
+    const Vec3 p = record.motion->apply(s.mesh.node(chain[i]), 1);
     if (i > 0 && i + 1 < chain.size()) {
       image.push_back(s.mesh.addNode(p));
       nodeSizes.push_back(nodeSizes[chain[i]]);
@@ -305,7 +305,7 @@ void meshSweptSurface(const Sweep& s, const ModelSurface& surface,
         grid[i] = chain[i];
         continue;
       }
-      const Vec3 p = record.motion.apply(s.mesh.node(chain[i]), f[k]);
+      const Vec3 p = record.motion->apply(s.mesh.node(chain[i]), f[k]);
       if (const std::optional<NodeIndex> found = boundary.find(p)) {
         grid[k * n + i] = *found;
       } else if (k < layers && i > 0 && i + 1 < n) {
@@ -347,7 +347,7 @@ void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRe
     for (NodeIndex n : block.nodes) {
       auto [it, added] = image.try_emplace(n, 0);
       if (added) {
-        const Vec3 p = record.motion.apply(s.mesh.node(n), 1);
+        const Vec3 p = record.motion->apply(s.mesh.node(n), 1);
         if (inside.contains(n)) {
           it->second = s.mesh.addNode(p);
           nodeSizes.push_back(nodeSizes[n]);
@@ -403,7 +403,7 @@ class Columns {
           std::vector<double> fractions)
       : s_(s),
         volume_(volume),
-        motion_(volume.extrusion->motion),
+        motion_(*volume.extrusion->motion),
         inside_(source.nodes.begin(), source.nodes.end()),
         boundary_(closureLocator(s.model, s.mesh, {3, volume.tag}, s.tolerance)),
         f_(std::move(fractions)) {}

@@ -97,7 +97,7 @@ std::vector<EntityId> GeoFactory::extrudePoint(int tag, const ExtrusionMotion& m
     }
   }
   curve.tag = newRegionTag(1);
-  curve.extrusion = ExtrusionRecord{tag, layers, curve.end(), motion};
+  curve.extrusion = ExtrusionRecord{tag, layers, curve.end(), std::make_shared<const ExtrusionMotion>(motion)};
   curves_[curve.tag] = curve;
   return {{0, curve.end()}, {1, curve.tag}};
 }
@@ -124,7 +124,7 @@ std::vector<EntityId> GeoFactory::extrudeCurve(int tag, const ExtrusionMotion& m
   if (endSweep == 0) loop = {-top, -startSweep, tag};
   if (startSweep == 0) loop = {tag, endSweep, -top};
   Surface surface{newRegionTag(2), SurfaceKind::Swept, {loop}};
-  surface.extrusion = ExtrusionRecord{std::abs(tag), layers, top, motion};
+  surface.extrusion = ExtrusionRecord{std::abs(tag), layers, top, std::make_shared<const ExtrusionMotion>(motion)};
   surface.sweep = motion;
   surfaces_[surface.tag] = surface;
   std::vector<EntityId> out{{1, top}, {2, surface.tag}};
@@ -151,7 +151,7 @@ std::vector<EntityId> GeoFactory::extrudeSurface(int tag, const ExtrusionMotion&
   surfaces_[top.tag] = top;
   Volume volume{newVolumeTag(), {{tag, top.tag}}};
   for (EntityId s : laterals) volume.shells.front().push_back(s.tag);
-  volume.extrusion = ExtrusionRecord{tag, layers, top.tag, motion};
+  volume.extrusion = ExtrusionRecord{tag, layers, top.tag, std::make_shared<const ExtrusionMotion>(motion)};
   volumes_[volume.tag] = volume;
   std::vector<EntityId> out{{2, top.tag}, {3, volume.tag}};
   out.insert(out.end(), laterals.begin(), laterals.end());
