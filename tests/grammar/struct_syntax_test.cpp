@@ -2,23 +2,12 @@
 #include <gtest/gtest.h>
 
 #include "grammar/parse.h"
+#include "tests/grammar/syntax_test_helpers.h"
 
 namespace geomesh {
 namespace {
 
 using namespace ast;
-
-StmtList parse(std::string_view text) { return parseScript("s.geo", text); }
-
-std::string syntaxError(std::string_view text) {
-  try {
-    parse(text);
-  } catch (const SyntaxError& error) {
-    return std::to_string(error.location().line) + ":" + std::to_string(error.location().column) +
-           ": " + error.what();
-  }
-  return "";
-}
 
 const Expr& assignedValue(const StmtList& program, std::size_t i = 0) {
   return *std::get<AssignStmt>(program.at(i)->node).value;

@@ -1,24 +1,12 @@
 #include <gtest/gtest.h>
 
 #include "grammar/parse.h"
+#include "tests/grammar/syntax_test_helpers.h"
 
 namespace geomesh {
 namespace {
 
 using namespace ast;
-
-StmtList parse(std::string_view text) { return parseScript("p.geo", text); }
-
-// "line:col: message" of the syntax error in `text`, or "" if it parses.
-std::string syntaxError(std::string_view text) {
-  try {
-    parse(text);
-  } catch (const SyntaxError& error) {
-    return std::to_string(error.location().line) + ":" + std::to_string(error.location().column) +
-           ": " + error.what();
-  }
-  return "";
-}
 
 template <class Node>
 const Node& only(const StmtList& program) {

@@ -9,17 +9,12 @@
 #include "kernel/geo/geo_factory.h"
 #include "kernel/geo/spline_geometry.h"
 #include "kernel/geometry_error.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
 
 const double kPi = std::acos(-1.0);
-
-void expectNear(Vec3 a, Vec3 b, double tolerance) {
-  EXPECT_NEAR(a.x, b.x, tolerance);
-  EXPECT_NEAR(a.y, b.y, tolerance);
-  EXPECT_NEAR(a.z, b.z, tolerance);
-}
 
 // First and second derivatives agree with central differences of the point (resp. first
 // derivative), away from the joints of piecewise curves.

@@ -6,6 +6,7 @@
 
 #include "kernel/geo/geo_factory.h"
 #include "kernel/geometry_error.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
@@ -16,16 +17,6 @@ std::vector<EntityId> ids(std::initializer_list<std::pair<int, int>> list) {
   std::vector<EntityId> out;
   for (auto [dim, tag] : list) out.push_back({dim, tag});
   return out;
-}
-
-void addUnitSquareSurface(GeoFactory& geo) {
-  geo.addPoint(1, {0, 0, 0}, 1);
-  geo.addPoint(2, {1, 0, 0}, 1);
-  geo.addPoint(3, {1, 1, 0}, 1);
-  geo.addPoint(4, {0, 1, 0}, 1);
-  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
 }
 
 const ExtrusionLayers kNoLayers{};

@@ -5,27 +5,12 @@
 
 #include "kernel/geo/geo_factory.h"
 #include "kernel/geometry_error.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
 
 const double kPi = std::acos(-1.0);
-
-void addUnitSquareSurface(GeoFactory& geo) {
-  geo.addPoint(1, {0, 0, 0}, 1);
-  geo.addPoint(2, {1, 0, 0}, 1);
-  geo.addPoint(3, {1, 1, 0}, 1);
-  geo.addPoint(4, {0, 1, 0}, 1);
-  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
-}
-
-void expectNear(Vec3 a, Vec3 b) {
-  EXPECT_NEAR(a.x, b.x, 1e-12);
-  EXPECT_NEAR(a.y, b.y, 1e-12);
-  EXPECT_NEAR(a.z, b.z, 1e-12);
-}
 
 TEST(AffineMap, BuildsTheUsualTransformations) {
   expectNear(AffineMap::rotation({0, 0, 1}, {1, 0, 0}, kPi / 2).apply({2, 0, 0}), {1, 1, 0});

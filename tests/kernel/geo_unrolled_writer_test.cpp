@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "kernel/geo/geo_factory.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
@@ -92,13 +93,7 @@ TEST(GeoUnrolledWriter, WritesTransfiniteAndRecombineConstraints) {
 // The unit square extruded along z, as the reference writes it after the same script.
 TEST(GeoUnrolledWriter, WritesAnExtrudedCubeAsTheReferenceDoes) {
   GeoFactory geo;
-  geo.addPoint(1, {0, 0, 0}, 1);
-  geo.addPoint(2, {1, 0, 0}, 1);
-  geo.addPoint(3, {1, 1, 0}, 1);
-  geo.addPoint(4, {0, 1, 0}, 1);
-  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
+  addUnitSquareSurface(geo);
   geo.extrude({{2, 1}}, ExtrusionMotion::translate({0, 0, 1}), {});
   std::ostringstream out;
   writeUnrolledGeo(geo, out);

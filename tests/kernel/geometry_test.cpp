@@ -3,15 +3,10 @@
 #include "kernel/geo/circle_arc_geometry.h"
 #include "kernel/geo/line_geometry.h"
 #include "kernel/plane_geometry.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
-
-void expectNear(Vec3 a, Vec3 b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
 
 TEST(LineGeometry, DerivativesMatchFiniteDifferences) {
   const LineGeometry line({1, 2, 3}, {4, -2, 3.5});

@@ -6,15 +6,10 @@
 #include <map>
 
 #include "kernel/geometry_error.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
-
-void expectNear(Vec3 a, Vec3 b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
 
 TEST(OccFactory, BoxVolume) {
   OccFactory occ;
