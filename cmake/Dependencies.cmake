@@ -40,6 +40,11 @@ target_include_directories(geomesh_lemon SYSTEM INTERFACE ${LEMON_INCLUDE_DIR})
 
 find_path(OCC_INCLUDE_DIR Standard_Version.hxx PATH_SUFFIXES opencascade)
 geomesh_require(OCC_INCLUDE_DIR "OpenCASCADE headers" "libocct-foundation-dev")
+# Debian 12 ships this header, which the foundation and modeling headers include, in the
+# visualization package rather than beside them.
+find_path(OCC_ALIASED_ARRAY_DIR NCollection_AliasedArray.hxx PATHS ${OCC_INCLUDE_DIR} NO_DEFAULT_PATH)
+geomesh_require(OCC_ALIASED_ARRAY_DIR "the OpenCASCADE header NCollection_AliasedArray.hxx"
+                "libocct-visualization-dev")
 set(GEOMESH_OCC_LIBS TKernel TKMath TKG2d TKG3d TKGeomBase TKBRep TKGeomAlgo TKTopAlgo TKPrim
                      TKBO TKBool TKFillet TKOffset TKShHealing)
 set(GEOMESH_OCC_PACKAGES

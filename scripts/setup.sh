@@ -13,6 +13,7 @@ packages=(
   libtet1.5-dev
   liblemon-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-visualization-dev libocct-data-exchange-dev
   libgtest-dev
   clang libclang-rt-14-dev
 )
