@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "mesh/quality.h"
+#include "mesh/core/quality.h"
 
 namespace geomesh {
 

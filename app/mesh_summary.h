@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "kernel/model.h"
-#include "mesh/mesh.h"
+#include "mesh/core/mesh.h"
 
 namespace geomesh {
 

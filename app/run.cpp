@@ -13,10 +13,10 @@
 #include "interpreter/diagnostics.h"
 #include "interpreter/session.h"
 #include "kernel/geo/geo_unrolled_writer.h"
-#include "mesh/generate.h"
-#include "mesh/io/msh_reader.h"
-#include "mesh/io/msh_writer.h"
-#include "mesh/mesh_check.h"
+#include "mesh/pipeline/generate.h"
+#include "io/msh_reader.h"
+#include "io/msh_writer.h"
+#include "mesh/checks/mesh_check.h"
 
 namespace geomesh {
 

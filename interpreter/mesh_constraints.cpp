@@ -9,7 +9,7 @@
 
 #include "interpreter/script_interpreter.h"
 #include "interpreter/session.h"
-#include "mesh/fields/math_expression.h"
+#include "mesh/sizes/math_expression.h"
 
 namespace geomesh {
 

@@ -11,9 +11,9 @@
 #include "interpreter/script_interpreter.h"
 #include "interpreter/session.h"
 #include "kernel/geo/geo_unrolled_writer.h"
-#include "mesh/generate.h"
-#include "mesh/io/msh_reader.h"
-#include "mesh/io/msh_writer.h"
+#include "mesh/pipeline/generate.h"
+#include "io/msh_reader.h"
+#include "io/msh_writer.h"
 
 namespace geomesh {
 

@@ -10,8 +10,8 @@
 
 #include "grammar/ast.h"
 #include "interpreter/value.h"
-#include "kernel/geo/affine_map.h"
-#include "kernel/geo/extrusion_motion.h"
+#include "kernel/affine_map.h"
+#include "kernel/extrusion_motion.h"
 #include "kernel/model.h"
 #include "stdlib/math_functions.h"
 

@@ -6,8 +6,8 @@
 
 #include "interpreter/interpreter.h"
 #include "interpreter/value.h"
-#include "mesh/generate.h"
-#include "mesh/io/msh_reader.h"
+#include "mesh/pipeline/generate.h"
+#include "io/msh_reader.h"
 
 namespace geomesh {
 

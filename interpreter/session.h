@@ -12,8 +12,8 @@
 #include "kernel/geo/geo_factory.h"
 #include "kernel/messages.h"
 #include "kernel/model.h"
-#include "mesh/mesh.h"
-#include "mesh/mesh_options.h"
+#include "mesh/core/mesh.h"
+#include "mesh/core/mesh_options.h"
 #include "stdlib/options.h"
 
 namespace geomesh {

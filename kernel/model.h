@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/geo/extrusion_motion.h"
+#include "kernel/extrusion_motion.h"
 #include "kernel/geometry.h"
 
 namespace geomesh {

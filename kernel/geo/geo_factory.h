@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/geo/affine_map.h"
-#include "kernel/geo/extrusion_motion.h"
+#include "kernel/affine_map.h"
+#include "kernel/extrusion_motion.h"
 #include "kernel/model.h"
 
 namespace geomesh {

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "kernel/geo/extrusion_motion.h"
+#include "kernel/extrusion_motion.h"
 #include "kernel/geometry.h"
 
 namespace geomesh {

@@ -13,7 +13,7 @@
 #include "app/mesh_summary.h"
 #include "app/run.h"
 #include "golden_expectation.h"
-#include "mesh/io/msh_reader.h"
+#include "io/msh_reader.h"
 #include "tests/scratch.h"
 
 namespace fs = std::filesystem;

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "mesh/io/msh_reader.h"
-#include "mesh/quality.h"
+#include "io/msh_reader.h"
+#include "mesh/core/quality.h"
 #include "script_runner.h"
 #include "tests/scratch.h"
 

@@ -1,8 +1,8 @@
-#include "mesh/curve_mesher.h"
+#include "mesh/curves/curve_mesher.h"
 
 #include <gtest/gtest.h>
 
-#include "mesh/generate.h"
+#include "mesh/pipeline/generate.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

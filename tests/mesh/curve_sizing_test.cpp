@@ -8,9 +8,9 @@
 #include "kernel/geo/ellipse_arc_geometry.h"
 #include "kernel/geo/line_geometry.h"
 #include "kernel/geo/spline_geometry.h"
-#include "mesh/curve_mesher.h"
-#include "mesh/generate.h"
-#include "mesh/size_rules.h"
+#include "mesh/curves/curve_mesher.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/sizes/size_rules.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

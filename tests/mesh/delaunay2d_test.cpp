@@ -1,4 +1,4 @@
-#include "mesh/delaunay2d.h"
+#include "mesh/surfaces/delaunay2d.h"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "mesh/constrained_delaunay.h"
-#include "mesh/predicates.h"
-#include "mesh/spatial_sort.h"
+#include "mesh/surfaces/constrained_delaunay.h"
+#include "mesh/core/predicates.h"
+#include "mesh/core/spatial_sort.h"
 
 namespace geomesh {
 namespace {

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "kernel/geo/geo_factory.h"
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
-#include "mesh/quality.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/core/quality.h"
 
 namespace geomesh {
 namespace {

@@ -1,4 +1,4 @@
-#include "mesh/generate.h"
+#include "mesh/pipeline/generate.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "kernel/plane_geometry.h"
-#include "mesh/mesh_check.h"
+#include "mesh/checks/mesh_check.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

@@ -1,4 +1,4 @@
-#include "mesh/mesh_adapt.h"
+#include "mesh/surfaces/mesh_adapt.h"
 
 #include <gtest/gtest.h>
 
@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "kernel/geo/geo_factory.h"
-#include "mesh/constrained_delaunay.h"
-#include "mesh/curve_mesher.h"
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
-#include "mesh/modifiable_triangulation.h"
-#include "mesh/quality.h"
-#include "mesh/surface_mesher.h"
+#include "mesh/surfaces/constrained_delaunay.h"
+#include "mesh/curves/curve_mesher.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/surfaces/modifiable_triangulation.h"
+#include "mesh/core/quality.h"
+#include "mesh/surfaces/surface_mesher.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

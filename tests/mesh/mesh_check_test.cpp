@@ -1,8 +1,8 @@
-#include "mesh/mesh_check.h"
+#include "mesh/checks/mesh_check.h"
 
 #include <gtest/gtest.h>
 
-#include "mesh/generate.h"
+#include "mesh/pipeline/generate.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

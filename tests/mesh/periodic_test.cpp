@@ -1,6 +1,6 @@
 // Periodic curves and surfaces: the slave's mesh is the image of its master's, node for node,
 // and the links survive writing and reading MSH files.
-#include "mesh/periodic.h"
+#include "mesh/structured/periodic.h"
 
 #include <gtest/gtest.h>
 
@@ -12,11 +12,11 @@
 #include <set>
 #include <sstream>
 
-#include "mesh/curve_mesher.h"
-#include "mesh/generate.h"
-#include "mesh/io/msh_reader.h"
-#include "mesh/io/msh_writer.h"
-#include "mesh/mesh_check.h"
+#include "mesh/curves/curve_mesher.h"
+#include "mesh/pipeline/generate.h"
+#include "io/msh_reader.h"
+#include "io/msh_writer.h"
+#include "mesh/checks/mesh_check.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

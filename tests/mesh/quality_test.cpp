@@ -1,4 +1,4 @@
-#include "mesh/quality.h"
+#include "mesh/core/quality.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-#include "mesh/recombine.h"
+#include "mesh/quads/recombine.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
-#include "mesh/quality.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/core/quality.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

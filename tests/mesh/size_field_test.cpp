@@ -1,4 +1,4 @@
-#include "mesh/fields/size_field.h"
+#include "mesh/sizes/size_field.h"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "mesh/fields/math_expression.h"
-#include "mesh/fields/point_cloud.h"
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
+#include "mesh/sizes/math_expression.h"
+#include "mesh/sizes/point_cloud.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

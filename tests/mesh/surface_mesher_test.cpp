@@ -1,4 +1,4 @@
-#include "mesh/surface_mesher.h"
+#include "mesh/surfaces/surface_mesher.h"
 
 #include <gtest/gtest.h>
 
@@ -7,10 +7,10 @@
 #include <cstdlib>
 #include <functional>
 
-#include "mesh/curve_mesher.h"
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
-#include "mesh/quality.h"
+#include "mesh/curves/curve_mesher.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/core/quality.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

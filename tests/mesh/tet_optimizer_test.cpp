@@ -1,4 +1,4 @@
-#include "mesh/tet_optimizer.h"
+#include "mesh/volumes/tet_optimizer.h"
 
 #include <gtest/gtest.h>
 
@@ -9,11 +9,11 @@
 #include <set>
 #include <vector>
 
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
-#include "mesh/predicates.h"
-#include "mesh/quality.h"
-#include "mesh/volume_mesher.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/core/predicates.h"
+#include "mesh/core/quality.h"
+#include "mesh/volumes/volume_mesher.h"
 
 namespace geomesh {
 namespace {

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "mesh/generate.h"
-#include "mesh/mesh_check.h"
-#include "mesh/transfinite_curve.h"
+#include "mesh/pipeline/generate.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/curves/transfinite_curve.h"
 #include "mesh_test_models.h"
 
 namespace geomesh {

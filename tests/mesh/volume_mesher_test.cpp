@@ -1,4 +1,4 @@
-#include "mesh/volume_mesher.h"
+#include "mesh/volumes/volume_mesher.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <array>
 #include <map>
 
-#include "mesh/generate.h"
+#include "mesh/pipeline/generate.h"
 
 namespace geomesh {
 namespace {

@@ -1,0 +1,87 @@
+#include "io/msh_content.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace geomesh {
+
+namespace {
+
+std::string describe(EntityId e) {
+  static constexpr const char* kNames[] = {"point", "curve", "surface", "volume"};
+  const char* name = e.dim >= 0 && e.dim <= 3 ? kNames[e.dim] : "entity";
+  return std::string(name) + " " + std::to_string(e.tag);
+}
+
+std::set<EntityId> physicalEntities(const Model& model) {
+  std::set<EntityId> out;
+  for (const auto& [id, group] : model.physicalGroups())
+    for (int tag : group.entities) out.insert({id.dim, std::abs(tag)});
+  return out;
+}
+
+std::vector<const ElementBlock*> blocksByType(const EntityMesh& em) {
+  std::vector<const ElementBlock*> out;
+  for (const ElementBlock& b : em.blocks)
+    if (b.size() > 0) out.push_back(&b);
+  std::sort(out.begin(), out.end(), [](const ElementBlock* a, const ElementBlock* b) {
+    return static_cast<int>(a->type) < static_cast<int>(b->type);
+  });
+  return out;
+}
+
+void checkNodeIndices(const Mesh& mesh, EntityId e, std::span<const NodeIndex> nodes) {
+  for (NodeIndex n : nodes)
+    if (n >= mesh.nodeCount())
+      throw std::invalid_argument("the mesh of " + describe(e) + " refers to node " +
+                                  std::to_string(n) + ", which does not exist");
+}
+
+}  // namespace
+
+MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) {
+  MshContent content;
+  for (EntityId e : model.entities(-1)) content.entities.insert(e);
+  for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
+  const bool physicalOnly = !saveAll && !model.physicalGroups().empty();
+  const std::set<EntityId> physical = physicalEntities(model);
+
+  std::vector<char> used(mesh.nodeCount(), physicalOnly ? 0 : 1);
+  for (EntityId e : content.entities) {
+    const EntityMesh* em = mesh.find(e);
+    if (!em || (physicalOnly && !physical.contains(e))) continue;
+    for (const ElementBlock* b : blocksByType(*em)) {
+      checkNodeIndices(mesh, e, b->nodes);
+      content.elementBlocks.push_back({e, b});
+      content.elementCount += b->size();
+      for (NodeIndex n : b->nodes) used[n] = 1;
+    }
+  }
+
+  content.nodeTag.assign(mesh.nodeCount(), 0);
+  for (EntityId e : content.entities) {
+    MshNodeBlock block{e, {}};
+    if (const EntityMesh* em = mesh.find(e)) {
+      checkNodeIndices(mesh, e, em->nodes);
+      for (NodeIndex n : em->nodes) {
+        if (!used[n]) continue;
+        if (content.nodeTag[n] != 0)
+          throw std::invalid_argument("node " + std::to_string(n) + " is held by two entities");
+        content.nodeTag[n] = ++content.nodeCount;
+        block.nodes.push_back(n);
+      }
+    }
+    if (!physicalOnly || physical.contains(e) || !block.nodes.empty())
+      content.nodeBlocks.push_back(std::move(block));
+  }
+
+  for (const MshElementBlock& b : content.elementBlocks)
+    for (NodeIndex n : b.block->nodes)
+      if (content.nodeTag[n] == 0)
+        throw std::invalid_argument("node " + std::to_string(n) + " of an element of " +
+                                    describe(b.entity) + " is held by no entity");
+  return content;
+}
+
+}  // namespace geomesh

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// What an MSH file holds, decided once for every format version: which nodes and elements are
+// saved, in which order, and the tag each node gets in the file.
+struct MshNodeBlock {
+  EntityId entity;
+  std::vector<NodeIndex> nodes;
+};
+
+struct MshElementBlock {
+  EntityId entity;
+  const ElementBlock* block = nullptr;
+};
+
+struct MshContent {
+  std::vector<std::uint64_t> nodeTag;  // per mesh node: its tag in the file, 0 if not saved
+  std::vector<MshNodeBlock> nodeBlocks;
+  std::vector<MshElementBlock> elementBlocks;  // by (dim, tag), then element type
+  std::size_t nodeCount = 0;
+  std::size_t elementCount = 0;
+  std::set<EntityId> entities;  // of the model and of the mesh
+};
+
+// With physical groups and !saveAll, only elements of entities in a physical group are saved;
+// an entity's node block is then written when the entity is in a group or has a node used by a
+// saved element. Otherwise every entity has a node block, possibly empty. Throws
+// std::invalid_argument when an element uses a node that no entity holds.
+MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll);
+
+}  // namespace geomesh

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "kernel/model.h"
+#include "io/msh_decoder.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// What the section readers of an MSH file build up, turned into the model's physical groups
+// once the whole file is read.
+struct MshReadState {
+  Model& model;
+  Mesh& mesh;
+  std::unordered_map<std::uint64_t, NodeIndex> nodeIndex;  // file tag -> mesh node
+  std::map<EntityId, std::string> physicalNames;           // (dim, group tag) -> name
+  std::map<EntityId, std::vector<int>> physicalMembers;    // (dim, group tag) -> entity tags
+
+  void addToPhysical(int dim, int group, int entity);
+  NodeIndex node(MshDecoder& in, std::uint64_t tag) const;  // fails for an unknown tag
+  // Element type from its MSH number; fails for types the mesh cannot hold.
+  static ElementType elementType(MshDecoder& in, int number);
+  static void checkDimension(MshDecoder& in, int dim);
+};
+
+void readMsh41Entities(MshDecoder& in, MshReadState& state);
+void readMsh41Nodes(MshDecoder& in, MshReadState& state);
+void readMsh41Elements(MshDecoder& in, MshReadState& state);
+void readMsh22Nodes(MshDecoder& in, MshReadState& state);
+void readMsh22Elements(MshDecoder& in, MshReadState& state);
+// $Periodic: each link is kept in the linked entity's EntityMesh::periodic.
+void readMsh41Periodic(MshDecoder& in, MshReadState& state);
+void readMsh22Periodic(MshDecoder& in, MshReadState& state);
+
+// Reads the end marker of a section, after optional whitespace (a line break follows binary
+// data).
+void expectSectionEnd(MshDecoder& in, const char* marker);
+
+}  // namespace geomesh

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "kernel/model.h"
+#include "io/msh_content.h"
+#include "io/msh_encoder.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// The sections of MSH files, shared by the writers of each version.
+void writeMeshFormat(MshEncoder& out, const char* version);
+// Binary data is followed by a line break before the end marker.
+void endSection(MshEncoder& out, const char* endMarker);
+void writePhysicalNames(MshEncoder& out, const Model& model);  // only when some have names
+
+void writeMsh41Body(MshEncoder& out, const Model& model, const Mesh& mesh,
+                    const MshContent& content);
+void writeMsh22Body(MshEncoder& out, const Model& model, const Mesh& mesh,
+                    const MshContent& content, bool saveAll);
+// $Periodic, when some saved entity is periodic; `msh2` selects the MSH 2.2 layout.
+void writePeriodic(MshEncoder& out, const Mesh& mesh, const MshContent& content, bool msh2);
+
+}  // namespace geomesh

@@ -1,0 +1,87 @@
+#include "io/msh_writer.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "io/msh_sections.h"
+
+namespace geomesh {
+
+void writeMeshFormat(MshEncoder& out, const char* version) {
+  out.text("$MeshFormat\n");
+  out.text(version);
+  out.text(out.binary() ? " 1 8\n" : " 0 8\n");
+  if (out.binary()) {
+    out.integer(1);  // lets a reader detect the byte order
+    out.text("\n");
+  }
+  out.text("$EndMeshFormat\n");
+}
+
+void endSection(MshEncoder& out, const char* endMarker) {
+  if (out.binary()) out.text("\n");
+  out.text(endMarker);
+}
+
+void writePhysicalNames(MshEncoder& out, const Model& model) {
+  std::string lines;
+  std::size_t count = 0;
+  for (const auto& [id, group] : model.physicalGroups()) {
+    if (group.name.empty()) continue;
+    lines += std::to_string(id.dim) + " " + std::to_string(id.tag) + " \"" + group.name + "\"\n";
+    ++count;
+  }
+  if (count == 0) return;
+  out.text("$PhysicalNames\n" + std::to_string(count) + "\n" + lines + "$EndPhysicalNames\n");
+}
+
+void writeMsh(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MshWriteOptions& options) {
+  const bool v41 = options.version == 4.1 || options.version == 4;
+  if (!v41 && options.version != 2.2 && options.version != 2)
+    throw std::invalid_argument("unsupported MSH version " + std::to_string(options.version) +
+                                " (4.1 and 2.2 are supported)");
+  const MshContent content = selectMshContent(model, mesh, options.saveAll);
+  MshEncoder encoder(out, options.binary);
+  writeMeshFormat(encoder, v41 ? "4.1" : "2.2");
+  writePhysicalNames(encoder, model);
+  if (v41)
+    writeMsh41Body(encoder, model, mesh, content);
+  else
+    writeMsh22Body(encoder, model, mesh, content, options.saveAll);
+  encoder.flush();
+}
+
+namespace {
+
+// A sibling of the destination, so that the final rename stays on one file system.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
+  std::filesystem::path tmp = path;
+  tmp += ".partial";
+  return tmp;
+}
+
+}  // namespace
+
+void writeMshFile(const std::string& path, const Model& model, const Mesh& mesh,
+                  const MshWriteOptions& options) {
+  const std::filesystem::path tmp = temporaryPathFor(path);
+  try {
+    {
+      std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
+      if (!file) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
+      writeMsh(file, model, mesh, options);
+      file.close();
+      if (!file) throw std::runtime_error("error while writing '" + tmp.string() + "'");
+    }
+    std::filesystem::rename(tmp, path);
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw std::runtime_error("could not write '" + path + "': " + e.what());
+  }
+}
+
+}  // namespace geomesh

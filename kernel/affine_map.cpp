@@ -1,0 +1,62 @@
+#include "kernel/affine_map.h"
+
+#include <cmath>
+
+#include "kernel/geometry_error.h"
+
+namespace geomesh {
+
+AffineMap AffineMap::translation(Vec3 d) {
+  return {{1, 0, 0, d.x, 0, 1, 0, d.y, 0, 0, 1, d.z}};
+}
+
+AffineMap AffineMap::rotation(Vec3 axis, Vec3 point, double angle) {
+  if (norm(axis) == 0) throw GeometryError("Rotation: the axis is the zero vector");
+  const Vec3 u = normalized(axis);
+  const double c = std::cos(angle), s = std::sin(angle);
+  // The rotation matrix of angle `angle` about the unit vector u, term by term.
+  AffineMap map;
+  const double t = 1 - c;
+  map.m = {u.x * u.x * t + c,       u.x * u.y * t - u.z * s, u.x * u.z * t + u.y * s, 0,
+           u.x * u.y * t + u.z * s, u.y * u.y * t + c,       u.y * u.z * t - u.x * s, 0,
+           u.x * u.z * t - u.y * s, u.y * u.z * t + u.x * s, u.z * u.z * t + c,       0};
+  map.pivot = point;
+  return map;
+}
+
+// The Householder reflection, written as the built-in kernel of Gmsh writes it (so that it
+// rounds the same): I + f n n^T and f d n, with f = -2 / |n|^2.
+AffineMap AffineMap::symmetry(double a, double b, double c, double d) {
+  const double n2 = a * a + b * b + c * c;
+  if (n2 == 0) throw GeometryError("Symmetry: the plane's normal is the zero vector");
+  const double f = -2.0 / n2;
+  const double n[3] = {a, b, c};
+  AffineMap map;
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) map.m[4 * i + j] = (i == j ? 1.0 : 0.0) + n[i] * n[j] * f;
+    map.m[4 * i + 3] = n[i] * d * f;
+  }
+  return map;
+}
+
+AffineMap AffineMap::dilation(Vec3 center, Vec3 factors) {
+  return {{factors.x, 0, 0, center.x * (1 - factors.x), 0, factors.y, 0,
+           center.y * (1 - factors.y), 0, 0, factors.z, center.z * (1 - factors.z)}};
+}
+
+std::array<double, 16> AffineMap::homogeneous() const {
+  std::array<double, 16> h{};
+  const double p[3] = {pivot.x, pivot.y, pivot.z};
+  for (std::size_t i = 0; i < 3; ++i) {
+    double moved = 0;
+    for (std::size_t j = 0; j < 3; ++j) {
+      h[4 * i + j] = m[4 * i + j];
+      moved += m[4 * i + j] * p[j];
+    }
+    h[4 * i + 3] = m[4 * i + 3] + p[i] - moved;
+  }
+  h[15] = 1;
+  return h;
+}
+
+}  // namespace geomesh

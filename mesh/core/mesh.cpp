@@ -1,0 +1,75 @@
+#include "mesh/core/mesh.h"
+
+#include <algorithm>
+
+namespace geomesh {
+
+const char* elementName(ElementType t) {
+  switch (t) {
+    case ElementType::Point1: return "point";
+    case ElementType::Line2: return "line";
+    case ElementType::Line3: return "line3";
+    case ElementType::Triangle3: return "triangle";
+    case ElementType::Triangle6: return "triangle6";
+    case ElementType::Quad4: return "quadrangle";
+    case ElementType::Quad8: return "quadrangle8";
+    case ElementType::Quad9: return "quadrangle9";
+    case ElementType::Tet4: return "tetrahedron";
+    case ElementType::Tet10: return "tetrahedron10";
+    case ElementType::Hex8: return "hexahedron";
+    case ElementType::Hex20: return "hexahedron20";
+    case ElementType::Hex27: return "hexahedron27";
+    case ElementType::Prism6: return "prism";
+    case ElementType::Prism15: return "prism15";
+    case ElementType::Prism18: return "prism18";
+    case ElementType::Pyramid5: return "pyramid";
+    case ElementType::Pyramid13: return "pyramid13";
+    case ElementType::Pyramid14: return "pyramid14";
+  }
+  return "unknown";
+}
+
+ElementBlock& EntityMesh::block(ElementType type) {
+  for (ElementBlock& b : blocks)
+    if (b.type == type) return b;
+  blocks.push_back({type, {}});
+  return blocks.back();
+}
+
+const ElementBlock* EntityMesh::findBlock(ElementType type) const {
+  for (const ElementBlock& b : blocks)
+    if (b.type == type) return &b;
+  return nullptr;
+}
+
+std::size_t EntityMesh::elementCount() const {
+  std::size_t n = 0;
+  for (const ElementBlock& b : blocks) n += b.size();
+  return n;
+}
+
+EntityMesh& Mesh::entity(EntityId e) {
+  auto [it, inserted] = entities_.try_emplace(e);
+  if (inserted) it->second.entity = e;
+  return it->second;
+}
+
+const EntityMesh* Mesh::find(EntityId e) const {
+  auto it = entities_.find(e);
+  return it == entities_.end() ? nullptr : &it->second;
+}
+
+std::size_t Mesh::elementCount(int dim) const {
+  std::size_t n = 0;
+  for (const auto& [id, em] : entities_)
+    for (const ElementBlock& b : em.blocks)
+      if (dim == -1 || dimension(b.type) == dim) n += b.size();
+  return n;
+}
+
+void Mesh::clear() {
+  coords_.clear();
+  entities_.clear();
+}
+
+}  // namespace geomesh

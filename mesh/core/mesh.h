@@ -1,0 +1,81 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/core/element_type.h"
+
+namespace geomesh {
+
+using NodeIndex = std::uint32_t;
+
+// Elements of one type on one entity: connectivity flattened, nodeCount(type) indices each.
+struct ElementBlock {
+  ElementType type = ElementType::Triangle3;
+  std::vector<NodeIndex> nodes;
+
+  std::size_t size() const { return nodes.size() / nodeCount(type); }
+  std::span<const NodeIndex> element(std::size_t i) const {
+    const std::size_t n = nodeCount(type);
+    return {nodes.data() + i * n, n};
+  }
+};
+
+// A periodic entity's mesh is the image of its master's by `affine` (row-major 4x4); `nodes`
+// pairs each node of the entity's closure with the master node it is the image of.
+struct PeriodicLink {
+  int master = 0;
+  std::vector<double> affine;
+  std::vector<std::pair<NodeIndex, NodeIndex>> nodes;  // (node here, node of the master)
+};
+
+// The mesh of one model entity: the nodes classified on it (not those of its boundary) and its
+// elements, which may use boundary nodes too.
+struct EntityMesh {
+  EntityId entity;
+  std::vector<NodeIndex> nodes;
+  // Parametric coordinates of `nodes`: 1 value per node on curves, 2 on surfaces; empty on
+  // points and volumes, or when the entity has no parametrization.
+  std::vector<double> parametric;
+  std::vector<ElementBlock> blocks;
+  std::optional<PeriodicLink> periodic;
+
+  ElementBlock& block(ElementType type);  // finds or appends
+  const ElementBlock* findBlock(ElementType type) const;
+  std::size_t elementCount() const;
+};
+
+// A mesh: node coordinates in one contiguous array and a mesh per model entity.
+class Mesh {
+ public:
+  NodeIndex addNode(Vec3 xyz) {
+    coords_.insert(coords_.end(), {xyz.x, xyz.y, xyz.z});
+    return static_cast<NodeIndex>(coords_.size() / 3 - 1);
+  }
+  Vec3 node(NodeIndex i) const { return {coords_[3 * i], coords_[3 * i + 1], coords_[3 * i + 2]}; }
+  void setNode(NodeIndex i, Vec3 p) {
+    coords_[3 * i] = p.x;
+    coords_[3 * i + 1] = p.y;
+    coords_[3 * i + 2] = p.z;
+  }
+  std::size_t nodeCount() const { return coords_.size() / 3; }
+  std::span<const double> coordinates() const { return coords_; }
+  void reserveNodes(std::size_t n) { coords_.reserve(3 * n); }
+
+  EntityMesh& entity(EntityId e);  // finds or creates
+  const EntityMesh* find(EntityId e) const;
+  const std::map<EntityId, EntityMesh>& entities() const { return entities_; }
+  std::size_t elementCount(int dim) const;  // dim -1: all
+  void clear();
+
+ private:
+  std::vector<double> coords_;
+  std::map<EntityId, EntityMesh> entities_;
+};
+
+}  // namespace geomesh

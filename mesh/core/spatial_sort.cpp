@@ -1,0 +1,29 @@
+#include "mesh/core/spatial_sort.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace geomesh {
+
+std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Traits =
+      CGAL::Spatial_sort_traits_adapter_2<Kernel,
+                                          CGAL::Pointer_property_map<Kernel::Point_2>::type>;
+  std::vector<Kernel::Point_2> cgalPoints;
+  cgalPoints.reserve(points.size());
+  for (Vec2 p : points) cgalPoints.emplace_back(p.u, p.v);
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(cgalPoints)));
+  std::vector<std::uint32_t> result(order.size());
+  std::copy(order.begin(), order.end(), result.begin());
+  return result;
+}
+
+}  // namespace geomesh

@@ -1,0 +1,250 @@
+#include "mesh/curves/curve_mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "mesh/core/mesh_error.h"
+#include "mesh/curves/transfinite_curve.h"
+
+namespace geomesh {
+namespace {
+
+constexpr double kGaussX[5] = {0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
+                               0.9061798459386640};
+constexpr double kGaussW[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                               0.2369268850561891, 0.2369268850561891};
+
+// The integral of f over [a, b] by 5-point Gauss-Legendre quadrature.
+template <class F>
+double gauss(double a, double b, F f) {
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  double sum = 0;
+  for (int i = 0; i < 5; ++i) sum += kGaussW[i] * f(mid + half * kGaussX[i]);
+  return sum * half;
+}
+
+double arcLength(const CurveGeometry& g, double a, double b) {
+  return gauss(a, b, [&](double t) { return norm(g.firstDerivative(t)); });
+}
+
+// Cumulative arc length at evenly spaced parameters, and its inverse.
+class ArcLengthTable {
+ public:
+  ArcLengthTable(const CurveGeometry& g, Interval range) : g_(g), range_(range) {
+    s_.push_back(0);
+    for (int k = 0; k < kPieces; ++k)
+      s_.push_back(s_.back() + arcLength(g, param(k), param(k + 1)));
+  }
+  double length() const { return s_.back(); }
+
+  // The parameter at arc length sigma: bracket in the table, then Newton steps.
+  double parameterAt(double sigma) const {
+    const auto it = std::upper_bound(s_.begin(), s_.end(), sigma);
+    const int k = std::clamp(static_cast<int>(it - s_.begin()) - 1, 0, kPieces - 1);
+    const double t0 = param(k), t1 = param(k + 1);
+    const double piece = s_[k + 1] - s_[k];
+    double t = piece > 0 ? t0 + (t1 - t0) * (sigma - s_[k]) / piece : t0;
+    for (int step = 0; step < 3; ++step) {
+      const double speed = norm(g_.firstDerivative(t));
+      if (!(speed > 0)) break;
+      t = std::clamp(t - (s_[k] + arcLength(g_, t0, t) - sigma) / speed, t0, t1);
+    }
+    return t;
+  }
+
+ private:
+  static constexpr int kPieces = 64;
+  double param(int k) const {
+    return range_.min + (range_.max - range_.min) * static_cast<double>(k) / kPieces;
+  }
+  const CurveGeometry& g_;
+  Interval range_;
+  std::vector<double> s_;
+};
+
+// The integral of 1/size along the arc length, sampled on a uniform grid (Simpson's rule on
+// each cell), and its inverse.
+class SizeIntegral {
+ public:
+  static constexpr int kCells = 2048;
+  // Arc lengths where a background field is sampled: every half cell.
+  static std::vector<double> fieldSampleArcLengths(double length) {
+    std::vector<double> sigma(2 * kCells + 1);
+    for (int k = 0; k <= 2 * kCells; ++k) sigma[k] = length * k / (2 * kCells);
+    return sigma;
+  }
+  // `fieldSizes`: empty, or bounds on the size (sampleSizeBounds) at fieldSampleArcLengths.
+  SizeIntegral(double length, double startSize, double endSize, const SizeRules& rules,
+               std::vector<double> fieldSizes = {})
+      : length_(length), h0_(startSize), h1_(endSize), rules_(rules),
+        field_(std::move(fieldSizes)) {
+    const double dx = length / kCells;
+    cumulative_.push_back(0);
+    for (int k = 0; k < kCells; ++k) {
+      const double a = k * dx, b = a + dx;
+      const double cell = dx / 6 * (1 / size(a) + 4 / size(0.5 * (a + b)) + 1 / size(b));
+      cumulative_.push_back(cumulative_.back() + cell);
+    }
+  }
+  double total() const { return cumulative_.back(); }
+  double size(double sigma) const {
+    const double f = length_ > 0 ? sigma / length_ : 0;
+    // Exact at both ends, even for 1e22.
+    return rules_.finish(std::min((1 - f) * h0_ + f * h1_, fieldSize(f)));
+  }
+  // The arc length where the integral reaches `value`.
+  double arcLengthAt(double value) const {
+    const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), value);
+    const int k = std::clamp(static_cast<int>(it - cumulative_.begin()) - 1, 0, kCells - 1);
+    const double cell = cumulative_[k + 1] - cumulative_[k];
+    const double f = cell > 0 ? (value - cumulative_[k]) / cell : 0;
+    return (k + f) * length_ / kCells;
+  }
+
+ private:
+  // The background field at fraction f of the length, interpolated between samples.
+  double fieldSize(double f) const {
+    if (field_.empty()) return 1e22;
+    const double x = std::clamp(f, 0.0, 1.0) * (field_.size() - 1);
+    const std::size_t k = std::min(static_cast<std::size_t>(x), field_.size() - 2);
+    const double w = x - static_cast<double>(k);
+    return (1 - w) * field_[k] + w * field_[k + 1];
+  }
+
+  double length_, h0_, h1_;
+  const SizeRules& rules_;
+  std::vector<double> field_;
+  std::vector<double> cumulative_;
+};
+
+// Bounds on the size besides the end points' sizes, at SizeIntegral's sample arc lengths: the
+// background field and the curvature bound (SizeRules::curvatureSize). Empty when neither applies.
+std::vector<double> sampleSizeBounds(const ModelCurve& curve, const ArcLengthTable& arc,
+                                     const SizeRules& rules, const SizeFields* fields) {
+  const bool field = fields && fields->hasBackground();
+  if (!field && !(rules.elementsPerTwoPi > 0)) return {};
+  const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
+  const Interval range = curve.geometry->range();
+  std::vector<double> ts;
+  std::vector<Vec3> points;
+  ts.reserve(sigma.size());
+  points.reserve(sigma.size());
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    ts.push_back(arc.length() > 0 ? arc.parameterAt(sigma[k])
+                                  : range.min + (range.max - range.min) * k / (sigma.size() - 1));
+    points.push_back(curve.geometry->point(ts.back()));
+  }
+  std::vector<double> sizes(points.size(), 1e22);
+  if (field) fields->evaluate(points, {1, curve.tag}, sizes);
+  for (std::size_t k = 0; k < sizes.size(); ++k)
+    sizes[k] = std::min(sizes[k], rules.curvatureSize(curveCurvature(*curve.geometry, ts[k])));
+  return sizes;
+}
+
+int segmentCount(double integral, int minimum, bool closed) {
+  // Rounded up, except that up to 1% above a whole number is forgiven.
+  const int n = std::max(static_cast<int>(std::floor(integral + 0.99)), minimum);
+  // Fewer than 3 segments cannot close a loop without overlapping itself.
+  return std::max(n, closed ? 3 : 1);
+}
+
+void addLines(const std::vector<NodeIndex>& chain, EntityMesh& em) {
+  ElementBlock& lines = em.block(ElementType::Line2);
+  for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+    lines.nodes.insert(lines.nodes.end(), {chain[k], chain[k + 1]});
+}
+
+// Nodes at the given fractions of the arc length (Transfinite Curve); each new node's size is
+// the mean length of its two segments.
+void placeTransfinite(const ModelCurve& curve, const ArcLengthTable& arc,
+                      const std::vector<double>& fractions, Mesh& mesh,
+                      std::vector<double>& nodeSizes) {
+  const CurveGeometry& g = *curve.geometry;
+  const Interval range = g.range();
+  EntityMesh& em = mesh.entity({1, curve.tag});
+  const NodeIndex first = pointNode(mesh, curve.startPoint);
+  std::vector<NodeIndex> chain{first};
+  const std::size_t segments = fractions.size() - 1;
+  for (std::size_t k = 1; k < segments; ++k) {
+    const double t = arc.length() > 0
+                         ? arc.parameterAt(fractions[k] * arc.length())
+                         : range.min + (range.max - range.min) * fractions[k];
+    const NodeIndex node = mesh.addNode(g.point(t));
+    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
+    nodeSizes[node] = 0.5 * arc.length() * (fractions[k + 1] - fractions[k - 1]);
+    em.nodes.push_back(node);
+    em.parametric.push_back(t);
+    chain.push_back(node);
+  }
+  chain.push_back(pointNode(mesh, curve.endPoint));
+  addLines(chain, em);
+}
+
+}  // namespace
+
+NodeIndex pointNode(const Mesh& mesh, int pointTag) {
+  const EntityMesh* m = mesh.find({0, pointTag});
+  if (!m || m->nodes.empty()) throw MeshError({0, pointTag}, "point has no mesh node");
+  return m->nodes.front();
+}
+
+void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
+               std::vector<double>& nodeSizes, const SizeFields* fields) {
+  const EntityId id{1, curve.tag};
+  const ModelPoint* start = model.point(curve.startPoint);
+  const ModelPoint* end = model.point(curve.endPoint);
+  if (!start || !end) throw MeshError(id, "curve has no end points");
+  if (!curve.geometry) throw MeshError(id, "curve has no geometry");
+  const CurveGeometry& g = *curve.geometry;
+  const Interval range = g.range();
+  const bool closed = curve.startPoint == curve.endPoint;
+
+  const ArcLengthTable arc(g, range);
+  EntityMesh& em = mesh.entity(id);
+  em.nodes.clear();
+  em.parametric.clear();
+  em.blocks.clear();
+  const auto& transfinite = model.meshConstraints().transfiniteCurves;
+  if (const auto it = transfinite.find(curve.tag); it != transfinite.end()) {
+    placeTransfinite(curve, arc, transfiniteFractions(it->second), mesh, nodeSizes);
+    return;
+  }
+  const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
+  const SizeIntegral integral(arc.length(), startSize, endSize, rules,
+                              sampleSizeBounds(curve, arc, rules, fields));
+  if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
+  constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
+  if (integral.total() > kMaxSegments)
+    throw MeshError(id, "the mesh size asks for more than 1e9 segments");
+  const int segments = segmentCount(integral.total(), rules.minimumSegments(g), closed);
+
+  std::vector<NodeIndex> chain{pointNode(mesh, curve.startPoint)};
+  for (int k = 1; k < segments; ++k) {
+    const double sigma = integral.arcLengthAt(integral.total() * k / segments);
+    const double t = arc.length() > 0 ? arc.parameterAt(sigma)
+                                      : range.min + (range.max - range.min) * k / segments;
+    const NodeIndex node = mesh.addNode(g.point(t));
+    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
+    nodeSizes[node] = integral.size(sigma);
+    em.nodes.push_back(node);
+    em.parametric.push_back(t);
+    chain.push_back(node);
+  }
+  chain.push_back(pointNode(mesh, curve.endPoint));
+  addLines(chain, em);
+}
+
+std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int signedTag) {
+  const int tag = std::abs(signedTag);
+  const ModelCurve* curve = model.curve(tag);
+  const EntityMesh* em = mesh.find({1, tag});
+  if (!curve || !em) throw MeshError({1, tag}, "curve has no mesh");
+  std::vector<NodeIndex> chain{pointNode(mesh, curve->startPoint)};
+  chain.insert(chain.end(), em->nodes.begin(), em->nodes.end());
+  chain.push_back(pointNode(mesh, curve->endPoint));
+  if (signedTag < 0) std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
+}  // namespace geomesh

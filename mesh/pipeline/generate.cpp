@@ -1,0 +1,260 @@
+#include "mesh/pipeline/generate.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <optional>
+#include <cstdio>
+#include <string>
+
+#include "mesh/curves/curve_mesher.h"
+#include "mesh/structured/extrusion_mesher.h"
+#include "mesh/sizes/size_field.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/structured/periodic.h"
+#include "mesh/quads/recombine.h"
+#include "mesh/sizes/size_rules.h"
+#include "mesh/quads/subdivision.h"
+#include "mesh/surfaces/surface_mesher.h"
+#include "mesh/structured/transfinite_surface.h"
+#include "mesh/volumes/volume_mesher.h"
+
+namespace geomesh {
+namespace {
+
+// Times one stage; done() reports "Meshing <dim>D... done (<seconds> s, <count> <elements>)".
+class StageTimer {
+ public:
+  explicit StageTimer(int dim) : dim_(dim), start_(std::chrono::steady_clock::now()) {}
+  void done(MessageSink& log, std::size_t count, const char* what) const {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    char line[128];
+    std::snprintf(line, sizeof line, "Meshing %dD... done (%.3g s, %zu %s)", dim_, seconds, count,
+                  what);
+    log.info(line);
+  }
+
+ private:
+  int dim_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
+                std::vector<double>& nodeSizes) {
+  for (const auto& [tag, point] : model.points()) {
+    const NodeIndex node = mesh.addNode(point.xyz);
+    const double field = fields.at(point.xyz, {0, tag});
+    nodeSizes.push_back(rules.finish(std::min(rules.pointSize(point), field)));
+    EntityMesh& em = mesh.entity({0, tag});
+    em.nodes.push_back(node);
+    em.block(ElementType::Point1).nodes.push_back(node);
+  }
+}
+
+// Recombine Surface{t} = angle, else Mesh.RecombineAll with the default angle; nullopt: none.
+std::optional<double> recombinationAngle(const Model& model, const MeshOptions& options,
+                                         int tag) {
+  constexpr double kDefaultAngle = 45;
+  const auto& recombined = model.meshConstraints().recombinedSurfaces;
+  if (const auto it = recombined.find(tag); it != recombined.end()) return it->second;
+  if (options.recombineAll) return kDefaultAngle;
+  return std::nullopt;
+}
+
+// Edges of the curves embedded in a surface, which recombination must keep.
+std::vector<std::uint64_t> embeddedEdges(const ModelSurface& surface, const Mesh& mesh) {
+  std::vector<std::uint64_t> keys;
+  for (int curve : surface.embeddedCurves)
+    if (const EntityMesh* em = mesh.find({1, std::abs(curve)}))
+      if (const ElementBlock* lines = em->findBlock(ElementType::Line2))
+        for (std::size_t e = 0; e < lines->size(); ++e)
+          keys.push_back(edgeKey(lines->element(e)[0], lines->element(e)[1]));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// What the 2D stage reads.
+struct SurfaceStage {
+  const Model& model;
+  const MeshOptions& options;
+  const SizeRules& rules;
+  const SizeFields& fields;
+  int dim;  // of the whole run
+  MessageSink& log;
+};
+
+// Quadrangles on the boundary of a volume would leave the tetrahedral mesher without a
+// closed triangulated shell: recombination is skipped there, with a warning.
+std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
+  std::optional<double> angle = recombinationAngle(stage.model, stage.options, tag);
+  if (angle && stage.dim >= 3 && !stage.model.upward({2, tag}).empty() &&
+      !boundsOnlyRecombinedExtrusions(stage.model, tag)) {
+    stage.log.warning("surface " + std::to_string(tag) +
+                      " bounds a volume meshed with tetrahedra: it is not recombined");
+    angle.reset();
+  }
+  return angle;
+}
+
+// The name of a 2D algorithm of the Mesh.Algorithm list that geomesh does not have.
+const char* missingAlgorithmName(int algorithm) {
+  switch (algorithm) {
+    case algorithm2d::kBamg: return "BAMG";
+    case algorithm2d::kPacking: return "Packing of Parallelograms";
+    case algorithm2d::kQuasiStructuredQuads: return "Quasi-structured Quad";
+    default: return nullptr;
+  }
+}
+
+bool isAvailable(int algorithm) {
+  using namespace algorithm2d;
+  for (int a : {kMeshAdapt, kAutomatic, kInitialMeshOnly, kDelaunay, kFrontalDelaunay,
+                kFrontalDelaunayQuads})
+    if (algorithm == a) return true;
+  return false;
+}
+
+// "N (name) is not available" or "N is not a 2D meshing algorithm".
+std::string whyUnavailable(int algorithm) {
+  const char* name = missingAlgorithmName(algorithm);
+  if (!name) return std::to_string(algorithm) + " is not a 2D meshing algorithm";
+  return std::to_string(algorithm) + " (" + name + ") is not available";
+}
+
+// MeshAlgorithm Surface{t} = n, else Mesh.Algorithm; what is not available falls back to
+// Frontal-Delaunay (the global option's warning is given once by meshSurfaces). Automatic
+// is Delaunay on planes and MeshAdapt on the other surfaces.
+int surfaceAlgorithm(const SurfaceStage& stage, const ModelSurface& surface) {
+  const auto& chosen = stage.model.meshConstraints().surfaceAlgorithms;
+  int algorithm = stage.options.algorithm2D;
+  if (const auto it = chosen.find(surface.tag); it != chosen.end()) {
+    algorithm = it->second;
+    if (!isAvailable(algorithm))
+      stage.log.warning("MeshAlgorithm of surface " + std::to_string(surface.tag) + ": " +
+                        whyUnavailable(algorithm) + "; meshed with Frontal-Delaunay (6)");
+  }
+  if (!isAvailable(algorithm)) return algorithm2d::kFrontalDelaunay;
+  if (algorithm != algorithm2d::kAutomatic) return algorithm;
+  const bool plane = surface.geometry && surface.geometry->isPlane();
+  return plane ? algorithm2d::kDelaunay : algorithm2d::kMeshAdapt;
+}
+
+void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh,
+                    std::vector<double>& nodeSizes) {
+  if (isPeriodicSurface(surface)) return;  // the image of its master: copyPeriodicSurfaces
+  const Model& model = stage.model;
+  const MeshOptions& options = stage.options;
+  const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
+  const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
+  if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
+    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
+    return;
+  }
+  meshSurface(model, surface, stage.rules, options.smoothing, mesh, nodeSizes, &stage.fields,
+              surfaceAlgorithm(stage, surface));
+  if (!angle || !surface.geometry) return;
+  EntityMesh& em = mesh.entity({2, surface.tag});
+  const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
+  recombineTriangles(mesh, em, *angle,
+                     simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom,
+                     embeddedEdges(surface, mesh));
+  smoothMixedMesh(*surface.geometry, mesh, em, std::max(options.smoothing, 1) * 3);
+}
+
+// Mesh.RecombinationAlgorithm 2 and 3: simple or blossom, then split into quadrangles.
+bool isFullQuad(const MeshOptions& options) {
+  return options.recombinationAlgorithm == 2 || options.recombinationAlgorithm == 3;
+}
+
+bool wantsAllQuadrangles(const Model& model, const MeshOptions& options) {
+  if (options.subdivisionAlgorithm == 1) return true;
+  if (!isFullQuad(options)) return false;
+  return options.recombineAll || !model.meshConstraints().recombinedSurfaces.empty();
+}
+
+void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& nodeSizes) {
+  const Model& model = stage.model;
+  const MeshOptions& options = stage.options;
+  MessageSink& log = stage.log;
+  const auto& chosen = model.meshConstraints().surfaceAlgorithms;
+  const bool anyByOption =
+      std::any_of(model.surfaces().begin(), model.surfaces().end(),
+                  [&](const auto& entry) { return !chosen.contains(entry.first); });
+  if (!isAvailable(options.algorithm2D) && anyByOption)
+    log.warning("Mesh.Algorithm " + whyUnavailable(options.algorithm2D) +
+                ": surfaces are meshed with Frontal-Delaunay (6)");
+  if (options.subdivisionAlgorithm == 2 || options.subdivisionAlgorithm == 3)
+    log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
+                " is not available; elements are not split");
+  const ExtrusionMesher extruded(model);
+  for (const auto& [tag, surface] : model.surfaces())
+    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh, nodeSizes);
+  extruded.meshSurfaces(mesh, nodeSizes);
+  copyPeriodicSurfaces(model, mesh, nodeSizes);
+  const MeshCheckReport report = checkMesh(model, mesh);
+  for (const MeshProblem& problem : report.problems)
+    if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
+}
+
+bool hasQuadrangles(const Mesh& mesh) {
+  for (const auto& entry : mesh.entities())
+    if (entry.first.dim == 2 && entry.second.findBlock(ElementType::Quad4)) return true;
+  return false;
+}
+
+bool hasOnlyTetrahedra(const Mesh& mesh) {
+  for (const auto& entry : mesh.entities())
+    for (const ElementBlock& block : entry.second.blocks)
+      if (dimension(block.type) == 3 && block.type != ElementType::Tet4) return false;
+  return true;
+}
+
+}  // namespace
+
+void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
+                  MessageSink& log) {
+  mesh.clear();
+  if (options.elementOrder > 1)
+    log.warning("Mesh.ElementOrder " + std::to_string(options.elementOrder) +
+                ": high-order elements are not supported yet; the mesh is first order");
+  SizeRules rules = SizeRules::from(model, options);
+  // Full-quad recombination of every surface meshes twice as coarse, then splits each
+  // element into quadrangles, which halves the sizes back.
+  if (options.recombineAll && isFullQuad(options) && dim >= 2) rules.factor *= 2;
+  std::vector<double> nodeSizes;  // target size at each node, read by the next dimension
+  const SizeFields fields(model, log);
+  meshPoints(model, rules, fields, mesh, nodeSizes);
+  if (dim >= 1) {
+    const StageTimer timer(1);
+    const std::map<int, Periodicity> periodic = periodicCurves(model);
+    const ExtrusionMesher extruded(model);
+    for (const auto& [tag, curve] : model.curves())
+      if (!periodic.contains(tag) && !extruded.meshesCurve(tag))
+        meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
+    extruded.meshCurves(mesh, nodeSizes);
+    copyPeriodicCurves(model, periodic, mesh, nodeSizes);
+    timer.done(log, mesh.elementCount(1), "lines");
+  }
+  if (dim >= 2) {
+    const StageTimer timer(2);
+    meshSurfaces({model, options, rules, fields, dim, log}, mesh, nodeSizes);
+    if (wantsAllQuadrangles(model, options)) {
+      if (dim == 2)
+        subdivideIntoQuadrangles(model, mesh);
+      else
+        log.warning("splitting into quadrangles is only done for 2D meshes; ignored");
+    }
+    timer.done(log, mesh.elementCount(2), hasQuadrangles(mesh) ? "elements" : "triangles");
+  }
+  if (dim >= 3) {
+    const StageTimer timer(3);
+    const ExtrusionMesher extruded(model);
+    for (const auto& [tag, volume] : model.volumes())
+      if (!extruded.meshesVolume(tag)) meshVolume(model, options, tag, mesh);
+    extruded.meshVolumes(mesh);
+    timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
+  }
+}
+
+}  // namespace geomesh

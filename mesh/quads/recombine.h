@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "kernel/geometry.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// Pairs the triangles of a surface mesh into quadrangles (Recombine Surface, Mesh.RecombineAll).
+// Two triangles sharing an edge that is not on the boundary make a candidate quadrangle when
+// it is convex and every corner angle stays within `maxAngleDeviation` degrees of 90
+// (Recombine Surface{..} = angle; 45 by default). Candidates are taken greedily, best
+// corner-angle quality first (Simple), or so, then completed by Edmonds' blossom algorithm
+// into a matching with as many quadrangles as possible (Blossom: every convex pair is a
+// candidate); each triangle joins at most one quadrangle, unpaired triangles stay. The Quad4
+// elements keep the triangles' orientation. Returns the number of quadrangles made.
+// Triangles are never joined across an edge of `keptEdges` (edge keys of curve segments,
+// sorted: see edgeKey).
+enum class RecombinationAlgorithm { Simple = 0, Blossom = 1 };
+std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngleDeviation,
+                               RecombinationAlgorithm algorithm,
+                               const std::vector<std::uint64_t>& keptEdges = {});
+
+// The key of the edge between two nodes, whatever their order.
+inline std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+// Corner-angle quality of a quadrangle: 1 - max |corner angle - 90 deg| / 90 deg, so 1 for a
+// rectangle; -1 when it is not strictly convex with respect to `normal`.
+double quadAngleQuality(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 normal);
+
+// Laplacian smoothing of the surface's own nodes over its triangles and quadrangles: each
+// node moves towards the mean of its neighbours, then back onto the surface (its parameters
+// updated); a move is kept only when the elements around the node stay valid (triangles not
+// inverted, quadrangles convex).
+void smoothMixedMesh(const SurfaceGeometry& g, Mesh& mesh, EntityMesh& em, int passes);
+
+}  // namespace geomesh

@@ -1,0 +1,151 @@
+#include "mesh/sizes/size_rules.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "kernel/geo/circle_arc_geometry.h"
+#include "kernel/geo/ellipse_arc_geometry.h"
+#include "kernel/geo/line_geometry.h"
+#include "kernel/geo/spline_geometry.h"
+
+namespace geomesh {
+namespace {
+
+constexpr double kUnbounded = 1e22;
+constexpr double kPi = 3.14159265358979323846;
+
+// Parameters where a curve is probed to recognise its shape.
+std::vector<double> probeParameters(const CurveGeometry& g) {
+  const Interval r = g.range();
+  std::vector<double> t;
+  for (int k = 0; k <= 8; ++k) t.push_back(r.min + (r.max - r.min) * (0.05 + 0.9 * k / 8));
+  return t;
+}
+
+// A circle or ellipse parametrized by its angle, c + a cos(t) u + b sin(t) v, is the one curve
+// whose point plus second derivative is its center everywhere.
+bool isAngleParametrizedConic(const CurveGeometry& g) {
+  const std::vector<double> ts = probeParameters(g);
+  const Vec3 center = g.point(ts[0]) + g.secondDerivative(ts[0]);
+  const double scale = distance(g.point(ts[0]), center);
+  if (!(scale > 0)) return false;
+  for (double t : ts)
+    if (distance(g.point(t) + g.secondDerivative(t), center) > 1e-9 * scale) return false;
+  return true;
+}
+
+// No curvature anywhere, relative to the curve's extent.
+bool isStraight(const CurveGeometry& g) {
+  const std::vector<double> ts = probeParameters(g);
+  double extent = 0;
+  for (double t : ts) extent = std::max(extent, distance(g.point(t), g.point(ts[0])));
+  for (double t : ts)
+    if (curveCurvature(g, t) * extent > 1e-12) return false;
+  return true;
+}
+
+// The three kinds of curves the minimum segment counts tell apart, as Gmsh names them.
+enum class CurveShape { Line, Arc, Other };
+
+// Curves of the built-in kernel say what they are; a spline stays a spline even when straight.
+// Other curves are recognised by their shape.
+CurveShape shapeOf(const CurveGeometry& g) {
+  if (dynamic_cast<const LineGeometry*>(&g)) return CurveShape::Line;
+  if (dynamic_cast<const CircleArcGeometry*>(&g) || dynamic_cast<const EllipseArcGeometry*>(&g))
+    return CurveShape::Arc;
+  if (dynamic_cast<const BSplineGeometry*>(&g) || dynamic_cast<const CatmullRomGeometry*>(&g))
+    return CurveShape::Other;
+  if (isAngleParametrizedConic(g)) return CurveShape::Arc;
+  return isStraight(g) ? CurveShape::Line : CurveShape::Other;
+}
+
+// The angle an arc of circle or ellipse spans (its parametric angle for an ellipse).
+double arcAngle(const CurveGeometry& g) {
+  if (const auto* circle = dynamic_cast<const CircleArcGeometry*>(&g)) return circle->angle();
+  if (const auto* ellipse = dynamic_cast<const EllipseArcGeometry*>(&g))
+    return std::abs(ellipse->sweep());
+  return g.range().max - g.range().min;
+}
+
+}  // namespace
+
+double curveCurvature(const CurveGeometry& g, double t) {
+  const Vec3 d1 = g.firstDerivative(t);
+  const double speed = norm(d1);
+  if (!(speed > 0)) return 0;
+  return norm(cross(d1, g.secondDerivative(t))) / (speed * speed * speed);
+}
+
+SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
+  SizeRules rules;
+  rules.sizeMin = options.sizeMin;
+  rules.sizeMax = options.sizeMax;
+  rules.factor = options.sizeFactor > 0 ? options.sizeFactor : 1;
+  rules.fromPoints = options.sizeFromPoints;
+  rules.extendFromBoundary = options.sizeExtendFromBoundary;
+  const BoundingBox box = model.boundingBox();
+  const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
+  rules.defaultSize = diagonal > 0 ? diagonal / 10 : 1;
+  rules.elementsPerTwoPi = std::max(options.sizeFromCurvature, 0.0);
+  rules.minCircleNodes = options.minCircleNodes;
+  rules.minCurveNodes = options.minCurveNodes;
+  if (rules.elementsPerTwoPi > 0)
+    for (const auto& entry : model.curves()) {
+      const ModelCurve& curve = entry.second;
+      if (!curve.geometry) continue;
+      const Interval r = curve.geometry->range();
+      const auto bound = [&](int point, double t) {
+        const double size = rules.curvatureSize(curveCurvature(*curve.geometry, t));
+        auto [it, inserted] = rules.pointCurvatureSizes.try_emplace(point, size);
+        if (!inserted) it->second = std::min(it->second, size);
+      };
+      bound(curve.startPoint, r.min);
+      bound(curve.endPoint, r.max);
+    }
+  return rules;
+}
+
+std::pair<double, double> SizeRules::curveEndSizes(const ModelPoint& start,
+                                                   const ModelPoint& end) const {
+  if (!fromPoints) return {kUnbounded, kUnbounded};
+  const double a = start.meshSize > 0 ? start.meshSize : 0;
+  const double b = end.meshSize > 0 ? end.meshSize : 0;
+  if (a == 0 && b == 0) return {defaultSize, defaultSize};
+  return {a > 0 ? a : kUnbounded, b > 0 ? b : kUnbounded};
+}
+
+double SizeRules::pointSize(const ModelPoint& p) const {
+  const double own = !fromPoints ? kUnbounded : p.meshSize > 0 ? p.meshSize : defaultSize;
+  return std::min(own, curvatureBound(p.tag));
+}
+
+double SizeRules::curvatureBound(int pointTag) const {
+  const auto it = pointCurvatureSizes.find(pointTag);
+  return it == pointCurvatureSizes.end() ? kUnbounded : it->second;
+}
+
+double SizeRules::curvatureSize(double curvature) const {
+  if (!(elementsPerTwoPi > 0) || !(curvature > 0)) return kUnbounded;
+  return 2 * kPi / (elementsPerTwoPi * curvature);
+}
+
+int SizeRules::minimumSegments(const CurveGeometry& g) const {
+  switch (shapeOf(g)) {
+    case CurveShape::Line: return 1;
+    case CurveShape::Arc: {
+      // Up to 1% of a segment above a whole number is forgiven, as for sizes.
+      const double n = std::floor(minCircleNodes * arcAngle(g) / (2 * kPi) + 0.99);
+      return std::max(static_cast<int>(n), 1);
+    }
+    case CurveShape::Other: break;
+  }
+  return std::max(minCurveNodes - 1, 1);
+}
+
+double SizeRules::finish(double rawSize) const {
+  // The lower bound wins when the bounds contradict each other.
+  return std::max(std::min(rawSize, sizeMax), sizeMin) * factor;
+}
+
+}  // namespace geomesh

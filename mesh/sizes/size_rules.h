@@ -1,0 +1,52 @@
+#pragma once
+
+#include <map>
+#include <utility>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh_options.h"
+
+namespace geomesh {
+
+// How the target element size is derived from the model and the Mesh.* options: the sizes
+// prescribed at a curve's end points are interpolated along it, then clamped into
+// [sizeMin, sizeMax] and multiplied by sizeFactor. A curve with no size at either end gets
+// the model's default size; one with a size at one end only is interpolated towards an
+// unbounded size at the other (so it stays coarse, as in Gmsh).
+// With Mesh.MeshSizeFromCurvature = N, the size is also at most 2*Pi / (N * curvature) along
+// each curve, and at each point's own node (the largest curvature of the curves ending there).
+// A point's curvature bound is not interpolated along the curves it bounds: a closed curve
+// would otherwise take the size of its sharpest end all along.
+struct SizeRules {
+  double sizeMin = 0;
+  double sizeMax = 1e22;
+  double factor = 1;
+  double defaultSize = 1;          // a tenth of the model's bounding box diagonal
+  bool fromPoints = true;          // else points ask for nothing (sizeMax applies)
+  bool extendFromBoundary = true;  // else surface interiors get sizeMax, not boundary sizes
+  double elementsPerTwoPi = 0;     // Mesh.MeshSizeFromCurvature; 0: off
+  int minCircleNodes = 7;          // per full turn of a circle or ellipse arc
+  int minCurveNodes = 3;           // on curves that are neither straight nor arcs
+  std::map<int, double> pointCurvatureSizes = {};  // point tag -> bound from curvature
+
+  static SizeRules from(const Model& model, const MeshOptions& options);
+  // The sizes a curve's end points ask for, before clamping (their curvature bound aside).
+  std::pair<double, double> curveEndSizes(const ModelPoint& start, const ModelPoint& end) const;
+  // The size at a point's own node, before clamping: its size, else the default (unbounded
+  // when fromPoints is off).
+  double pointSize(const ModelPoint& p) const;
+  // The bound curvature puts on the size where the curve's curvature is `curvature`.
+  double curvatureSize(double curvature) const;
+  // The bound curvature puts on the size at a point (unbounded when off).
+  double curvatureBound(int pointTag) const;
+  // Clamps a raw size and applies the factor.
+  double finish(double rawSize) const;
+  // The fewest segments a curve gets, however large the size: 1 on a straight segment,
+  // minCircleNodes per full turn on circle and ellipse arcs, minCurveNodes - 1 on others.
+  int minimumSegments(const CurveGeometry& g) const;
+};
+
+// The curvature of a curve at parameter t: |c' x c''| / |c'|^3.
+double curveCurvature(const CurveGeometry& g, double t);
+
+}  // namespace geomesh

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// Structured meshes of entities extruded with Layers{..} (and Recombine): a curve swept by a
+// point gets one segment per layer element; a surface swept by a curve gets the source
+// curve's nodes swept layer by layer (quadrangles, or each cut into two triangles); a volume
+// swept by a surface gets prisms and hexahedra (Recombine) or tetrahedra, three per prism.
+// The top of such a sweep is meshed as the image of its source. Node k of a sweep is the
+// motion at the layer fraction k applied to the source node.
+//
+// Quadrangles are cut, in surfaces and in prisms' faces alike, along the diagonal through
+// their corner of smallest node index (Dompierre, Labbé, Vallet, Camarero, IMR 1999), so that
+// neighbouring prisms and the lateral surfaces agree without looking at each other.
+class ExtrusionMesher {
+ public:
+  explicit ExtrusionMesher(const Model& model);
+
+  // Whether the entity's mesh comes from an extrusion with layers (a sweep or its top).
+  bool meshesCurve(int tag) const;
+  bool meshesSurface(int tag) const;
+  bool meshesVolume(int tag) const;
+
+  // Run after the other entities of the dimension are meshed; nodeSizes (indexed by node)
+  // receives a size for each new node, taken from the source node it comes from.
+  void meshCurves(Mesh& mesh, std::vector<double>& nodeSizes) const;
+  void meshSurfaces(Mesh& mesh, std::vector<double>& nodeSizes) const;
+  void meshVolumes(Mesh& mesh) const;
+
+ private:
+  const Model& model_;
+  double tolerance_ = 0;
+  std::map<int, const ExtrusionRecord*> topCurves_;    // top curve -> the surface's record
+  std::map<int, const ExtrusionRecord*> topSurfaces_;  // top surface -> the volume's record
+};
+
+// Whether the volume is extruded with layers.
+bool isLayeredExtrusion(const ModelVolume& volume);
+
+// Whether every volume the surface bounds (at least one) is extruded with layers and
+// Recombine: its quadrangles then become faces of hexahedra, not of tetrahedra.
+bool boundsOnlyRecombinedExtrusions(const Model& model, int surfaceTag);
+
+}  // namespace geomesh

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// Periodic meshes: a slave curve or surface (Periodic Curve/Surface{slave} = {master} + a
+// transformation) is meshed as the image of its master's mesh, so that nodes match one to one
+// across the transformation. Each slave's EntityMesh records the pairs in `periodic`.
+
+// The image of p by a row-major 4x4 affine map.
+Vec3 applyAffine(const std::vector<double>& affine, Vec3 p);
+
+// The periodic curves of a model: those of Periodic Curve, and those a Periodic Surface
+// implies: each curve bounding the master is matched with the curve bounding the slave that
+// its image coincides with (an explicit Periodic Curve takes precedence). Throws MeshError
+// naming the slave surface when a curve has no image among the slave's boundary curves.
+std::map<int, Periodicity> periodicCurves(const Model& model);
+
+// Meshes each curve of `links` as the image of its master's mesh (a master that is itself
+// periodic first), then links the end points of those curves to their masters' (the first
+// curve, by tag, decides for a point shared by several). Each new node is put on the slave's
+// geometry, with its parameter. Throws MeshError naming the curve when its end points are not
+// the images of its master's, or when its geometry is not the image of the master's.
+void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links, Mesh& mesh,
+                        std::vector<double>& nodeSizes);
+
+// Whether the surface is meshed as the image of another (by copyPeriodicSurfaces).
+bool isPeriodicSurface(const ModelSurface& surface);
+
+// Meshes every periodic surface as the image of its master's mesh (masters first): the images
+// of the master's boundary nodes are the slave's curve nodes, the others are new nodes put on
+// the slave's geometry; elements are oriented along the slave's normal. Throws MeshError naming
+// the surface when its boundary nodes are not the images of the master's.
+void copyPeriodicSurfaces(const Model& model, Mesh& mesh, std::vector<double>& nodeSizes);
+
+}  // namespace geomesh

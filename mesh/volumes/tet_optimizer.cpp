@@ -1,0 +1,338 @@
+#include "mesh/volumes/tet_optimizer.h"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "mesh/core/predicates.h"
+#include "mesh/core/quality.h"
+
+namespace geomesh {
+
+namespace {
+
+using Tet = std::array<int, 4>;  // local node indices, positively oriented
+
+constexpr int kPasses = 8;
+constexpr std::size_t kMaxRing = 9;  // larger rings around an edge are rare and rarely improve
+constexpr int kSmoothingSteps = 6;
+constexpr double kGain = 1e-6;  // smallest quality gain worth a change: no cycling on noise
+
+// Quality of a tetrahedron, -1 when it is flat or inverted (exact orientation test).
+double quality(const std::vector<Vec3>& xyz, const Tet& t) {
+  const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
+  if (orient3d(a, b, c, d) <= 0) return -1;
+  return tetGamma(a, b, c, d);
+}
+
+// A tetrahedral mesh being modified in place: dead tetrahedra stay as holes in the arrays, and
+// each node knows the tetrahedra around it, which is all the adjacency the local operations
+// need (a face's neighbour is found among the tetrahedra of one of its nodes).
+class TetOptimizer {
+ public:
+  TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable, const std::vector<Tet>& tets,
+               double threshold);
+  TetOptimizerStats run();
+  std::vector<Tet> tetrahedra() const;
+
+ private:
+  int addTet(const Tet& t);
+  void removeTet(int t);
+  bool improveTet(int t);
+  bool removeEdge(int a, int b);
+  bool swapFace(int t, int k);
+  bool smoothNode(int v);
+  double ballMinimum(int v, Vec3 at);
+
+  std::vector<Vec3>& xyz_;
+  std::vector<char> movable_;
+  std::vector<Tet> tets_;
+  std::vector<double> quality_;
+  std::vector<char> alive_;
+  std::vector<std::vector<int>> around_;  // per node, its alive tetrahedra
+  double threshold_;
+  TetOptimizerStats stats_;
+};
+
+TetOptimizer::TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable,
+                           const std::vector<Tet>& tets, double threshold)
+    : xyz_(xyz), movable_(std::move(movable)), around_(xyz.size()), threshold_(threshold) {
+  for (const Tet& t : tets) addTet(t);
+}
+
+int TetOptimizer::addTet(const Tet& t) {
+  const int index = static_cast<int>(tets_.size());
+  tets_.push_back(t);
+  quality_.push_back(quality(xyz_, t));
+  alive_.push_back(1);
+  for (int n : t) around_[n].push_back(index);
+  return index;
+}
+
+void TetOptimizer::removeTet(int t) {
+  alive_[t] = 0;
+  for (int n : tets_[t]) std::erase(around_[n], t);
+}
+
+std::vector<Tet> TetOptimizer::tetrahedra() const {
+  std::vector<Tet> out;
+  for (std::size_t t = 0; t < tets_.size(); ++t)
+    if (alive_[t]) out.push_back(tets_[t]);
+  return out;
+}
+
+// The ring of tetrahedra around edge ab, as the cycle of their other nodes r0 r1 ... with each
+// (a, b, ri, ri+1) positively oriented; empty when the edge is on the boundary (open ring).
+std::vector<int> edgeRing(const std::vector<Vec3>& xyz, const std::vector<Tet>& tets,
+                          const std::vector<int>& shared, int a, int b) {
+  std::unordered_map<int, int> next;
+  for (int t : shared) {
+    int x = -1, y = -1;
+    for (int n : tets[t])
+      if (n != a && n != b) (x < 0 ? x : y) = n;
+    if (orient3d(xyz[a], xyz[b], xyz[x], xyz[y]) < 0) std::swap(x, y);
+    if (!next.try_emplace(x, y).second) return {};
+  }
+  std::vector<int> ring{next.begin()->first};
+  for (std::size_t i = 1; i < shared.size(); ++i) {
+    auto it = next.find(ring.back());
+    if (it == next.end()) return {};
+    ring.push_back(it->second);
+  }
+  auto last = next.find(ring.back());
+  if (last == next.end() || last->second != ring.front()) return {};
+  // Start at the smallest node so that the result does not depend on hash order.
+  std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
+  return ring;
+}
+
+// Best triangulation of the ring polygon for the two apexes a and b (Klincsek's dynamic
+// programme, as in Shewchuk's edge removal): each triangle (ri, rj, rk), i < j < k, becomes the
+// tetrahedra (a, ri, rj, rk) and (b, ri, rk, rj). Returns the worst quality of the best one
+// and the tetrahedra.
+std::pair<double, std::vector<Tet>> triangulateRing(const std::vector<Vec3>& xyz,
+                                                    const std::vector<int>& ring, int a, int b) {
+  const std::size_t n = ring.size();
+  std::vector<double> best(n * n, 2.0);  // best[i * n + j]: polygon ri..rj; 2: empty
+  std::vector<std::size_t> split(n * n, 0);
+  auto triangle = [&](std::size_t i, std::size_t j, std::size_t k) {
+    return std::min(quality(xyz, {a, ring[i], ring[j], ring[k]}),
+                    quality(xyz, {b, ring[i], ring[k], ring[j]}));
+  };
+  for (std::size_t width = 2; width < n; ++width)
+    for (std::size_t i = 0; i + width < n; ++i) {
+      const std::size_t j = i + width;
+      double& q = best[i * n + j];
+      q = -2;
+      for (std::size_t k = i + 1; k < j; ++k) {
+        const double c = std::min({best[i * n + k], best[k * n + j], triangle(i, k, j)});
+        if (c > q) q = c, split[i * n + j] = k;
+      }
+    }
+  std::vector<Tet> tets;
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{0, n - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    if (j - i < 2) continue;
+    const std::size_t k = split[i * n + j];
+    tets.push_back({a, ring[i], ring[k], ring[j]});
+    tets.push_back({b, ring[i], ring[j], ring[k]});
+    todo.emplace_back(i, k);
+    todo.emplace_back(k, j);
+  }
+  return {best[n - 1], std::move(tets)};
+}
+
+bool TetOptimizer::removeEdge(int a, int b) {
+  std::vector<int> shared;
+  for (int t : around_[a])
+    if (std::find(tets_[t].begin(), tets_[t].end(), b) != tets_[t].end()) shared.push_back(t);
+  if (shared.size() < 3 || shared.size() > kMaxRing) return false;
+  const std::vector<int> ring = edgeRing(xyz_, tets_, shared, a, b);
+  if (ring.empty()) return false;
+  double before = 2;
+  for (int t : shared) before = std::min(before, quality_[t]);
+  auto [after, replacement] = triangulateRing(xyz_, ring, a, b);
+  if (!(after > before + kGain)) return false;
+  for (int t : shared) removeTet(t);
+  for (const Tet& t : replacement) addTet(t);
+  ++stats_.edgeRemovals;
+  return true;
+}
+
+// 2-3 flip of the face of t opposite its corner k, when the face is shared with another
+// tetrahedron: the two become three around the edge joining their apexes.
+bool TetOptimizer::swapFace(int t, int k) {
+  const Tet& tet = tets_[t];
+  // (p, q, r) oriented so that the apex d lies on its positive side.
+  int p = tet[(k + 1) % 4], q = tet[(k + 2) % 4], r = tet[(k + 3) % 4];
+  const int d = tet[k];
+  if (orient3d(xyz_[p], xyz_[q], xyz_[r], xyz_[d]) < 0) std::swap(p, q);
+  int other = -1;
+  for (int u : around_[p]) {
+    const Tet& s = tets_[u];
+    if (u != t && std::find(s.begin(), s.end(), q) != s.end() &&
+        std::find(s.begin(), s.end(), r) != s.end())
+      other = u;
+  }
+  if (other < 0) return false;  // a boundary face
+  int e = -1;
+  for (int n : tets_[other])
+    if (n != p && n != q && n != r) e = n;
+  const std::array<Tet, 3> replacement{Tet{p, q, e, d}, Tet{q, r, e, d}, Tet{r, p, e, d}};
+  double after = 2;
+  for (const Tet& s : replacement) after = std::min(after, quality(xyz_, s));
+  if (!(after > std::min(quality_[t], quality_[other]) + kGain)) return false;
+  removeTet(t);
+  removeTet(other);
+  for (const Tet& s : replacement) addTet(s);
+  ++stats_.faceSwaps;
+  return true;
+}
+
+double TetOptimizer::ballMinimum(int v, Vec3 at) {
+  const Vec3 saved = xyz_[v];
+  xyz_[v] = at;
+  double worst = 2;
+  for (int t : around_[v]) worst = std::min(worst, quality(xyz_, tets_[t]));
+  xyz_[v] = saved;
+  return worst;
+}
+
+// Moves v to raise the worst quality of its ball: first towards the centroid of its
+// neighbours, then by steps along the gradient of the worst tetrahedron's quality.
+bool TetOptimizer::smoothNode(int v) {
+  if (!movable_[v] || around_[v].empty()) return false;
+  const Vec3 start = xyz_[v];
+  double current = 2;
+  for (int t : around_[v]) current = std::min(current, quality_[t]);
+  Vec3 centroid{};
+  double length = 0;
+  int count = 0;
+  for (int t : around_[v])
+    for (int n : tets_[t])
+      if (n != v) {
+        centroid = centroid + xyz_[n];
+        length += distance(xyz_[n], start);
+        ++count;
+      }
+  centroid = centroid / count;
+  length /= count;
+  Vec3 at = start;
+  for (double w : {1.0, 0.5, 0.25}) {
+    const Vec3 candidate = start + w * (centroid - start);
+    const double q = ballMinimum(v, candidate);
+    if (q > current + kGain) {
+      at = candidate, current = q;
+      break;
+    }
+  }
+  for (int step = 0; step < kSmoothingSteps; ++step) {
+    int worst = around_[v].front();
+    xyz_[v] = at;
+    for (int t : around_[v])
+      if (quality(xyz_, tets_[t]) < quality(xyz_, tets_[worst])) worst = t;
+    const double h = 1e-5 * length;
+    const Vec3 axes[3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
+    double g[3];
+    for (int i = 0; i < 3; ++i) {
+      xyz_[v] = at + axes[i];
+      const double up = quality(xyz_, tets_[worst]);
+      xyz_[v] = at - axes[i];
+      g[i] = up - quality(xyz_, tets_[worst]);
+    }
+    xyz_[v] = start;
+    const Vec3 gradient{g[0], g[1], g[2]};
+    if (!(norm(gradient) > 0)) break;
+    const Vec3 direction = normalized(gradient);
+    bool moved = false;
+    for (double s : {0.1, 0.03, 0.01, 0.003}) {
+      const Vec3 candidate = at + s * length * direction;
+      const double q = ballMinimum(v, candidate);
+      if (q > current + kGain) {
+        at = candidate, current = q, moved = true;
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  if (at == start) return false;
+  xyz_[v] = at;
+  for (int t : around_[v]) quality_[t] = quality(xyz_, tets_[t]);
+  ++stats_.nodeMoves;
+  return true;
+}
+
+bool TetOptimizer::improveTet(int t) {
+  static constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  const Tet tet = tets_[t];
+  for (const auto& e : kEdges)
+    if (removeEdge(tet[e[0]], tet[e[1]])) return true;
+  for (int k = 0; k < 4; ++k)
+    if (swapFace(t, k)) return true;
+  return false;
+}
+
+TetOptimizerStats TetOptimizer::run() {
+  for (int pass = 0; pass < kPasses; ++pass) {
+    std::vector<int> bad;
+    for (std::size_t t = 0; t < tets_.size(); ++t)
+      if (alive_[t] && quality_[t] < threshold_) bad.push_back(static_cast<int>(t));
+    if (bad.empty()) break;
+    std::stable_sort(bad.begin(), bad.end(),
+                     [&](int x, int y) { return quality_[x] < quality_[y]; });
+    bool changed = false;
+    for (int t : bad)
+      if (alive_[t] && quality_[t] < threshold_ && improveTet(t)) changed = true;
+    std::vector<int> nodes;
+    for (std::size_t t = 0; t < tets_.size(); ++t)
+      if (alive_[t] && quality_[t] < threshold_)
+        nodes.insert(nodes.end(), tets_[t].begin(), tets_[t].end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    for (int v : nodes)
+      if (smoothNode(v)) changed = true;
+    if (!changed) break;
+  }
+  return stats_;
+}
+
+}  // namespace
+
+TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double threshold) {
+  EntityMesh& em = mesh.entity(volume);
+  ElementBlock* block = nullptr;
+  for (ElementBlock& b : em.blocks)
+    if (b.type == ElementType::Tet4) block = &b;
+  if (!block || block->size() == 0) return {};
+  // Local numbering in order of first use, so that the result depends on the input only.
+  std::unordered_map<NodeIndex, int> local;
+  std::vector<NodeIndex> global;
+  std::vector<Vec3> xyz;
+  std::vector<Tet> tets(block->size());
+  for (std::size_t i = 0; i < block->nodes.size(); ++i) {
+    const NodeIndex n = block->nodes[i];
+    auto [it, inserted] = local.try_emplace(n, static_cast<int>(global.size()));
+    if (inserted) {
+      global.push_back(n);
+      xyz.push_back(mesh.node(n));
+    }
+    tets[i / 4][i % 4] = it->second;
+  }
+  std::vector<char> movable(global.size(), 0);
+  for (NodeIndex n : em.nodes)
+    if (auto it = local.find(n); it != local.end()) movable[it->second] = 1;
+  TetOptimizer optimizer(xyz, std::move(movable), tets, threshold);
+  const TetOptimizerStats stats = optimizer.run();
+  block->nodes.clear();
+  for (const Tet& t : optimizer.tetrahedra())
+    for (int n : t) block->nodes.push_back(global[n]);
+  for (NodeIndex n : em.nodes)
+    if (auto it = local.find(n); it != local.end()) mesh.setNode(n, xyz[it->second]);
+  return stats;
+}
+
+}  // namespace geomesh

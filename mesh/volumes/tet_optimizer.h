@@ -1,0 +1,23 @@
+#pragma once
+
+#include <cstddef>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+struct TetOptimizerStats {
+  std::size_t edgeRemovals = 0;  // rings of tetrahedra around an edge retriangulated
+  std::size_t faceSwaps = 0;     // 2-3 flips
+  std::size_t nodeMoves = 0;     // interior nodes smoothed
+};
+
+// Improves the tetrahedra of a volume whose quality (gamma) is below `threshold`, by edge
+// removal, 2-3 face swaps and smoothing of the volume's own nodes. Faces with a single
+// tetrahedron (the boundary) and nodes not classified on the volume never change; every
+// accepted change keeps all tetrahedra positively oriented (exact test) and raises the minimum
+// quality of the tetrahedra it replaces. Deterministic: no node is added or renumbered.
+TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double threshold);
+
+}  // namespace geomesh
