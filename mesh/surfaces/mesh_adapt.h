@@ -5,17 +5,10 @@
 
 #include "mesh/surfaces/delaunay2d.h"
 #include "mesh/surfaces/frontal_refinement.h"
+#include "mesh/surfaces/planar_mesh.h"
 #include "mesh/surfaces/surface_metric.h"
 
 namespace geomesh {
-
-// A triangulated part of a work plane: triangle t has the counter-clockwise vertices
-// triangles[3t..3t+2], indices into `points`. Points no triangle uses are left over.
-struct PlanarMesh {
-  std::vector<Vec2> points;
-  std::vector<std::uint32_t> triangles;
-  std::vector<double> sizes;  // per point: the target size extended from the boundary
-};
 
 // MeshAdapt (Mesh.Algorithm 1): meshing by local modifications of the constrained Delaunay
 // triangulation of the boundary. Passes of edge splits (edges longer than 1.4 target sizes),

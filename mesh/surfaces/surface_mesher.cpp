@@ -9,10 +9,7 @@
 
 #include "mesh/surfaces/constrained_delaunay.h"
 #include "mesh/curves/curve_mesher.h"
-#include "mesh/surfaces/frontal_refinement.h"
 #include "mesh/core/mesh_error.h"
-#include "mesh/surfaces/mesh_adapt.h"
-#include "mesh/surfaces/smoothing.h"
 #include "mesh/surfaces/surface_metric.h"
 
 namespace geomesh {
@@ -123,16 +120,6 @@ std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules
   return sizes;
 }
 
-// The domain's triangles of a triangulation, with all its points.
-PlanarMesh planarMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-                      std::vector<double> sizes) {
-  PlanarMesh out{{tri.points().begin(), tri.points().end()}, {}, std::move(sizes)};
-  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
-    if (inside[t])
-      for (std::uint32_t i = 0; i < 3; ++i) out.triangles.push_back(tri.vertex(3 * t + i));
-  return out;
-}
-
 // Copies the triangles and their new vertices into the surface's EntityMesh.
 void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame& frame,
                const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh,
@@ -158,33 +145,11 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
   for (std::uint32_t v : planar.triangles) triangles.nodes.push_back(globalOf[v]);
 }
 
-// Fills the boundary triangulation with the algorithm asked for.
-PlanarMesh meshInterior(Triangulation2D tri, std::vector<std::uint8_t> inside,
-                        std::vector<double> sizes, const SurfaceInput& in, int algorithm2D,
-                        int smoothingPasses, const SurfaceMetric* metric,
-                        const WorkPlaneSize* field) {
-  const std::uint32_t firstMovable =
-      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
-  if (algorithm2D == algorithm2d::kMeshAdapt)
-    return adaptMesh(tri, inside, sizes, firstMovable, smoothingPasses, metric, field);
-  if (algorithm2D == algorithm2d::kFrontalDelaunayQuads) {
-    // Plain smoothing would pull the square cells out of shape.
-    refineFrontalQuads(tri, inside, sizes, metric, field);
-    smoothTriangulation(tri, inside, firstMovable, smoothingPasses, metric,
-                        SmoothingGuard::WorstQuality);
-  } else if (algorithm2D != algorithm2d::kInitialMeshOnly) {
-    (algorithm2D == algorithm2d::kDelaunay ? refineDelaunay : refineFrontal)(tri, inside, sizes,
-                                                                             metric, field);
-    smoothTriangulation(tri, inside, firstMovable, smoothingPasses, metric);
-  }
-  return planarMesh(tri, inside, std::move(sizes));
-}
-
 }  // namespace
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
                  int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes,
-                 const SizeFields* fields, int algorithm2D) {
+                 const SizeFields* fields, const SurfaceAlgorithm& algorithm) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -206,10 +171,12 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     return rules.finish(fields->at(g.point(frame.toParam(work)), id));
   };
   const bool withField = fields && fields->hasBackground();
-  const PlanarMesh planar =
-      meshInterior(std::move(tri), std::move(inside), boundarySizes(in, rules, mesh, nodeSizes),
-                   in, algorithm2D, smoothingPasses, g.isPlane() ? nullptr : &metric,
-                   withField ? &field : nullptr);
+  std::vector<double> sizes = boundarySizes(in, rules, mesh, nodeSizes);
+  const std::uint32_t firstMovable =
+      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
+  SurfaceInterior interior{tri,          inside, sizes, firstMovable, smoothingPasses,
+                           g.isPlane() ? nullptr : &metric, withField ? &field : nullptr};
+  const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);
   em.nodes.clear();

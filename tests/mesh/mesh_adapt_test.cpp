@@ -37,7 +37,7 @@ class RecordingSink final : public MessageSink {
 
 Mesh meshAdapt(const Model& model) {
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kMeshAdapt;
+  options.algorithm2D = findSurfaceAlgorithm("meshadapt")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(model, options, 2, mesh, log);
@@ -289,7 +289,7 @@ TEST(FrontalQuads, SquareCellsFollowTheBoundary) {
   for (double degrees : {0.0, 30.0}) {
     const Model model = turnedSquare(degrees);
     MeshOptions options;
-    options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+    options.algorithm2D = findSurfaceAlgorithm("delquad")->code;
     Mesh mesh;
     SilentSink log;
     generateMesh(model, options, 2, mesh, log);
@@ -306,7 +306,7 @@ TEST(FrontalQuads, RecombinedOnlyWhenAsked) {
   Model model = turnedSquare(0);
   model.meshConstraints().recombinedSurfaces[1] = 45;
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+  options.algorithm2D = findSurfaceAlgorithm("delquad")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(model, options, 2, mesh, log);
@@ -324,7 +324,7 @@ TEST(FrontalQuads, CurvedBoundaryAndHole) {
       b.polygon({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 0.05);
   b.surface({disc, hole});
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+  options.algorithm2D = findSurfaceAlgorithm("delquad")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, options, 2, mesh, log);
@@ -409,7 +409,7 @@ TEST(MeshAdapt, InitialMeshOnlyAddsNoNode) {
   PolygonModelBuilder b;
   b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kInitialMeshOnly;
+  options.algorithm2D = findSurfaceAlgorithm("initial2d")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, options, 2, mesh, log);
@@ -423,9 +423,9 @@ TEST(MeshAdapt, AutomaticIsDelaunayOnPlanesAndMeshAdaptElsewhere) {
   PolygonModelBuilder b;
   b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
   MeshOptions automatic, delaunay, adapt;
-  automatic.algorithm2D = algorithm2d::kAutomatic;
-  delaunay.algorithm2D = algorithm2d::kDelaunay;
-  adapt.algorithm2D = algorithm2d::kMeshAdapt;
+  automatic.algorithm2D = findSurfaceAlgorithm("auto")->code;
+  delaunay.algorithm2D = findSurfaceAlgorithm("del2d")->code;
+  adapt.algorithm2D = findSurfaceAlgorithm("meshadapt")->code;
   Mesh meshes[3];
   SilentSink log;
   generateMesh(b.model, automatic, 2, meshes[0], log);
@@ -444,7 +444,7 @@ TEST(MeshAdapt, SurfaceAlgorithmOverridesTheOptionAndUnknownOnesWarn) {
   const Mesh frontal = meshAdapt([&] {
     PolygonModelBuilder other;
     other.surface({other.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
-    other.model.meshConstraints().surfaceAlgorithms[1] = algorithm2d::kFrontalDelaunay;
+    other.model.meshConstraints().surfaceAlgorithms[1] = findSurfaceAlgorithm("front2d")->code;
     return other.model;
   }());
   Mesh byOption;
