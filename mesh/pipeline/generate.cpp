@@ -41,12 +41,12 @@ class StageTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
-void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
-                std::vector<double>& nodeSizes) {
+void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields,
+                Mesh& mesh) {
   for (const auto& [tag, point] : model.points()) {
     const NodeIndex node = mesh.addNode(point.xyz);
     const double field = fields.at(point.xyz, {0, tag});
-    nodeSizes.push_back(rules.finish(std::min(rules.pointSize(point), field)));
+    mesh.setNodeSize(node, rules.finish(std::min(rules.pointSize(point), field)));
     EntityMesh& em = mesh.entity({0, tag});
     em.nodes.push_back(node);
     em.block(ElementType::Point1).nodes.push_back(node);
@@ -111,18 +111,17 @@ const SurfaceAlgorithm& surfaceAlgorithm(const SurfaceStage& stage, const ModelS
   return surfaceAlgorithmFor(it->second);
 }
 
-void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh,
-                    std::vector<double>& nodeSizes) {
+void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh) {
   if (isPeriodicSurface(surface)) return;  // the image of its master: copyPeriodicSurfaces
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
   const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
   if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
-    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
+    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh);
     return;
   }
-  meshSurface(model, surface, stage.rules, options.smoothing, mesh, nodeSizes, &stage.fields,
+  meshSurface(model, surface, stage.rules, options.smoothing, mesh, &stage.fields,
               surfaceAlgorithm(stage, surface));
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
@@ -144,7 +143,7 @@ bool wantsAllQuadrangles(const Model& model, const MeshOptions& options) {
   return options.recombineAll || !model.meshConstraints().recombinedSurfaces.empty();
 }
 
-void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& nodeSizes) {
+void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   MessageSink& log = stage.log;
@@ -161,9 +160,9 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& no
                 " is not available; elements are not split");
   const ExtrusionMesher extruded(model);
   for (const auto& [tag, surface] : model.surfaces())
-    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh, nodeSizes);
-  extruded.meshSurfaces(mesh, nodeSizes);
-  copyPeriodicSurfaces(model, mesh, nodeSizes);
+    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh);
+  extruded.meshSurfaces(mesh);
+  copyPeriodicSurfaces(model, mesh);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
@@ -194,23 +193,22 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   // Full-quad recombination of every surface meshes twice as coarse, then splits each
   // element into quadrangles, which halves the sizes back.
   if (options.recombineAll && isFullQuad(options) && dim >= 2) rules.factor *= 2;
-  std::vector<double> nodeSizes;  // target size at each node, read by the next dimension
   const SizeFields fields(model, log);
-  meshPoints(model, rules, fields, mesh, nodeSizes);
+  meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
     const StageTimer timer(1);
     const std::map<int, Periodicity> periodic = periodicCurves(model);
     const ExtrusionMesher extruded(model);
     for (const auto& [tag, curve] : model.curves())
       if (!periodic.contains(tag) && !extruded.meshesCurve(tag))
-        meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
-    extruded.meshCurves(mesh, nodeSizes);
-    copyPeriodicCurves(model, periodic, mesh, nodeSizes);
+        meshCurve(model, curve, rules, mesh, &fields);
+    extruded.meshCurves(mesh);
+    copyPeriodicCurves(model, periodic, mesh);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {
     const StageTimer timer(2);
-    meshSurfaces({model, options, rules, fields, dim, log}, mesh, nodeSizes);
+    meshSurfaces({model, options, rules, fields, dim, log}, mesh);
     if (wantsAllQuadrangles(model, options)) {
       if (dim == 2)
         subdivideIntoQuadrangles(model, mesh);

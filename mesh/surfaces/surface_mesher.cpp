@@ -95,8 +95,8 @@ Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Ve
 // of the boundary segments at each boundary node (what the curve meshes actually realised,
 // so that the interior matches them), or the node's own size for an isolated embedded
 // point. Not extended: sizeMax everywhere.
-std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh& mesh,
-                                  const std::vector<double>& nodeSizes) {
+std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules,
+                                  const Mesh& mesh) {
   std::vector<double> sizes(Triangulation2D::kFirstVertex, 0.0);
   if (!rules.extendFromBoundary) {
     sizes.resize(sizes.size() + in.nodes.size(), rules.finish(rules.sizeMax));
@@ -115,15 +115,14 @@ std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules
     if (count[k] > 0)
       sizes.push_back(total[k] / count[k]);
     else
-      sizes.push_back(n < nodeSizes.size() && nodeSizes[n] > 0 ? nodeSizes[n] : fallback);
+      sizes.push_back(mesh.nodeSize(n) > 0 ? mesh.nodeSize(n) : fallback);
   }
   return sizes;
 }
 
 // Copies the triangles and their new vertices into the surface's EntityMesh.
 void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame& frame,
-               const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh,
-               std::vector<double>& nodeSizes) {
+               const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh) {
   constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   const std::uint32_t boundaryEnd = first + static_cast<std::uint32_t>(in.nodes.size());
   const std::uint32_t pointCount = static_cast<std::uint32_t>(planar.points.size());
@@ -138,8 +137,7 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
     globalOf[v] = node;
     em.nodes.push_back(node);
     em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
-    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
-    nodeSizes[node] = planar.sizes[v];
+    mesh.setNodeSize(node, planar.sizes[v]);
   }
   ElementBlock& triangles = em.block(ElementType::Triangle3);
   for (std::uint32_t v : planar.triangles) triangles.nodes.push_back(globalOf[v]);
@@ -148,8 +146,8 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
 }  // namespace
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
-                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes,
-                 const SizeFields* fields, const SurfaceAlgorithm& algorithm) {
+                 int smoothingPasses, Mesh& mesh, const SizeFields* fields,
+                 const SurfaceAlgorithm& algorithm) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -171,7 +169,7 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     return rules.finish(fields->at(g.point(frame.toParam(work)), id));
   };
   const bool withField = fields && fields->hasBackground();
-  std::vector<double> sizes = boundarySizes(in, rules, mesh, nodeSizes);
+  std::vector<double> sizes = boundarySizes(in, rules, mesh);
   const std::uint32_t firstMovable =
       Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
   SurfaceInterior interior{tri,          inside, sizes, firstMovable, smoothingPasses,
@@ -182,7 +180,7 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   em.nodes.clear();
   em.parametric.clear();
   em.blocks.clear();
-  storeMesh(planar, in, frame, g, em, mesh, nodeSizes);
+  storeMesh(planar, in, frame, g, em, mesh);
 }
 
 }  // namespace geomesh
