@@ -21,6 +21,9 @@ constexpr double kSqrt3 = 1.7320508075688772;
 constexpr double kSqrt2 = 1.4142135623730951;
 constexpr double kPi = 3.14159265358979323846;
 
+constexpr auto nextCorner = Triangulation2D::nextCorner;
+constexpr auto prevCorner = Triangulation2D::prevCorner;
+
 enum class State : std::uint8_t { Outside, Waiting, Active, Accepted };
 // Where new points go: in front of the front (frontal-Delaunay), at the circumcentre of the
 // worst triangle (Delaunay refinement), wherever it is, or in front of the front at the
@@ -134,7 +137,8 @@ class FrontalRefiner {
     double bestLength = 0;
     for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
       if (!isFrontEdge(c)) continue;
-      const double l = length(sub(p(t, (c + 2) % 3), p(t, (c + 1) % 3)));
+      const double l = length(sub(tri_.point(tri_.vertex(prevCorner(c))),
+                                  tri_.point(tri_.vertex(nextCorner(c)))));
       if (best == kNone || l < bestLength) best = c, bestLength = l;
     }
     return best;
@@ -143,8 +147,8 @@ class FrontalRefiner {
   // Where to put the new point in front of the edge of `corner` (Rebay's placement), in the
   // metric of the edge's midpoint.
   Vec2 frontPoint(std::uint32_t t, std::uint32_t corner) const {
-    const std::uint32_t va = tri_.vertex(3 * t + (corner + 1) % 3);
-    const std::uint32_t vb = tri_.vertex(3 * t + (corner + 2) % 3);
+    const std::uint32_t va = tri_.vertex(nextCorner(corner));
+    const std::uint32_t vb = tri_.vertex(prevCorner(corner));
     const MetricFrame f = frameAt(
         {0.5 * (tri_.point(va).u + tri_.point(vb).u), 0.5 * (tri_.point(va).v + tri_.point(vb).v)});
     const Vec2 a = f.apply(tri_.point(va)), b = f.apply(tri_.point(vb));
@@ -188,8 +192,8 @@ class FrontalRefiner {
       if (!inside_[t]) continue;
       for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
         if (tri_.kind(c) == EdgeKind::Free) continue;
-        const std::uint32_t va = tri_.vertex(3 * t + (c + 1) % 3);
-        const std::uint32_t vb = tri_.vertex(3 * t + (c + 2) % 3);
+        const std::uint32_t va = tri_.vertex(nextCorner(c));
+        const std::uint32_t vb = tri_.vertex(prevCorner(c));
         const Vec2 pa = tri_.point(va), pb = tri_.point(vb);
         const Vec2 d = frameAt({0.5 * (pa.u + pb.u), 0.5 * (pa.v + pb.v)}).apply(sub(pb, pa));
         const double angle = 4 * std::atan2(d.v, d.u);
@@ -214,8 +218,8 @@ class FrontalRefiner {
   // nearest the target size (an axis edge gets a right angle at its end, a diagonal one its
   // opposite corner). Rebay's point when that one would not replace t.
   Vec2 quadPoint(std::uint32_t t, std::uint32_t corner) const {
-    const std::uint32_t va = tri_.vertex(3 * t + (corner + 1) % 3);
-    const std::uint32_t vb = tri_.vertex(3 * t + (corner + 2) % 3);
+    const std::uint32_t va = tri_.vertex(nextCorner(corner));
+    const std::uint32_t vb = tri_.vertex(prevCorner(corner));
     const Vec2 middle{0.5 * (tri_.point(va).u + tri_.point(vb).u),
                       0.5 * (tri_.point(va).v + tri_.point(vb).v)};
     const MetricFrame f = frameAt(middle);

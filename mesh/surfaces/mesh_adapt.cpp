@@ -5,7 +5,6 @@
 #include <tuple>
 #include <utility>
 
-#include "mesh/surfaces/modifiable_triangulation.h"
 #include "mesh/core/predicates.h"
 
 namespace geomesh {
@@ -23,8 +22,8 @@ constexpr double kCollapseQuality = 0.2;
 // A vertex that smoothing moves by less than this fraction of the target size has settled.
 constexpr double kSettled = 0.02;
 
-constexpr auto nextCorner = ModifiableTriangulation::nextCorner;
-constexpr auto prevCorner = ModifiableTriangulation::prevCorner;
+constexpr auto nextCorner = Triangulation2D::nextCorner;
+constexpr auto prevCorner = Triangulation2D::prevCorner;
 
 Vec2 sub(Vec2 a, Vec2 b) {
   return {a.u - b.u, a.v - b.v};
@@ -83,6 +82,13 @@ class BoundarySizes {
   const std::vector<double>& sizes_;
 };
 
+// The domain's part of a triangulation: its boundary edges on the hull.
+Triangulation2D domainOf(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside) {
+  Triangulation2D domain = tri;
+  domain.keepTriangles(inside);
+  return domain;
+}
+
 struct Edge {
   double length;  // in target sizes
   std::uint32_t a, b;
@@ -93,7 +99,7 @@ class MeshAdapter {
   MeshAdapter(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
               const std::vector<double>& sizes, std::uint32_t firstMovable,
               const SurfaceMetric* metric, const WorkPlaneSize* field)
-      : mesh_(boundary, inside), background_(boundary, inside, sizes), metric_(metric),
+      : mesh_(domainOf(boundary, inside)), background_(boundary, inside, sizes), metric_(metric),
         field_(field), firstMovable_(firstMovable), extended_(sizes),
         target_(sizes.size()), hint_(sizes.size(), kNone), mark_(sizes.size(), 0),
         touched_(sizes.size(), 0) {
@@ -142,7 +148,7 @@ class MeshAdapter {
   bool allPositiveAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
   PlanarMesh result() const;
 
-  ModifiableTriangulation mesh_;
+  Triangulation2D mesh_;  // the domain only
   BoundarySizes background_;
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
@@ -226,7 +232,7 @@ MeshAdapter::Range MeshAdapter::range() const {
 
 void MeshAdapter::splitLongEdges() {
   for (const Edge& e : edgesOutside(true)) {
-    const std::uint32_t c = mesh_.findEdge(e.a, e.b);
+    const std::uint32_t c = mesh_.findUndirectedEdge(e.a, e.b);
     if (c != kNone && mesh_.kind(c) == EdgeKind::Free) split(c);
   }
 }
@@ -253,7 +259,8 @@ void MeshAdapter::split(std::uint32_t c) {
 
 void MeshAdapter::collapseShortEdges() {
   for (const Edge& e : edgesOutside(false)) {
-    if (!mesh_.inMesh(e.a) || !mesh_.inMesh(e.b) || mesh_.findEdge(e.a, e.b) == kNone) continue;
+    if (!mesh_.inMesh(e.a) || !mesh_.inMesh(e.b) || mesh_.findUndirectedEdge(e.a, e.b) == kNone)
+      continue;
     if (!tryCollapse(e.a, e.b)) tryCollapse(e.b, e.a);
   }
 }
@@ -298,15 +305,11 @@ void MeshAdapter::swapEdges() {
       if (mesh_.neighbour(c) != kNone && mesh_.neighbour(c) > c) stack.push_back(c);
   }
   std::reverse(stack.begin(), stack.end());
-  while (!stack.empty()) {
-    const std::uint32_t c = stack.back();
-    stack.pop_back();
-    if (!swapImproves(c)) continue;
-    const std::uint32_t t1 = c / 3, t2 = mesh_.neighbour(c) / 3;
+  mesh_.flipWhile(std::move(stack), [this](std::uint32_t c) {
+    if (!swapImproves(c)) return false;
     touch(mesh_.vertex(c)), touch(mesh_.vertex(mesh_.neighbour(c)));
-    mesh_.flip(c);
-    stack.insert(stack.end(), {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2});
-  }
+    return true;
+  });
 }
 
 bool MeshAdapter::swapImproves(std::uint32_t c) const {

@@ -16,7 +16,7 @@
 #include "mesh/curves/curve_mesher.h"
 #include "mesh/pipeline/generate.h"
 #include "mesh/checks/mesh_check.h"
-#include "mesh/surfaces/modifiable_triangulation.h"
+#include "mesh/surfaces/triangulation2d.h"
 #include "mesh/core/quality.h"
 #include "mesh/surfaces/surface_mesher.h"
 #include "mesh_test_models.h"
@@ -345,8 +345,8 @@ TEST(FrontalQuads, CurvedBoundaryAndHole) {
 }
 
 // Every neighbour link goes both ways across the same two vertices.
-void expectConsistent(const ModifiableTriangulation& m) {
-  using T = ModifiableTriangulation;
+void expectConsistent(const Triangulation2D& m) {
+  using T = Triangulation2D;
   for (std::uint32_t t = 0; t < m.triangleCount(); ++t) {
     if (!m.alive(t)) continue;
     for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
@@ -360,13 +360,13 @@ void expectConsistent(const ModifiableTriangulation& m) {
   }
 }
 
-std::size_t aliveCount(const ModifiableTriangulation& m) {
+std::size_t aliveCount(const Triangulation2D& m) {
   std::size_t n = 0;
   for (std::uint32_t t = 0; t < m.triangleCount(); ++t) n += m.alive(t);
   return n;
 }
 
-TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
+TEST(Triangulation2D, SplitFlipAndCollapseKeepTheLinks) {
   // The unit square in two triangles.
   const std::vector<Vec2> corners{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   Triangulation2D tri = delaunayTriangulation(corners);
@@ -374,14 +374,15 @@ TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
   constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   for (std::uint32_t k = 0; k < 4; ++k) sides.push_back({k + first, (k + 1) % 4 + first});
   ASSERT_EQ(recoverSegments(tri, sides), -1);
-  ModifiableTriangulation m(tri, classifyInside(tri));
+  Triangulation2D m = tri;
+  m.keepTriangles(classifyInside(tri));
   ASSERT_EQ(aliveCount(m), 2u);
   std::uint32_t diagonal = kNone;
   for (std::uint32_t c = 0; c < 6 && diagonal == kNone; ++c)
     if (m.neighbour(c) != kNone) diagonal = c;
   ASSERT_NE(diagonal, kNone);
-  const std::uint32_t a = m.vertex(ModifiableTriangulation::nextCorner(diagonal));
-  const std::uint32_t b = m.vertex(ModifiableTriangulation::prevCorner(diagonal));
+  const std::uint32_t a = m.vertex(Triangulation2D::nextCorner(diagonal));
+  const std::uint32_t b = m.vertex(Triangulation2D::prevCorner(diagonal));
   const std::uint32_t centre = m.addPoint({0.5, 0.5});
   m.split(diagonal, centre);
   expectConsistent(m);
@@ -390,15 +391,15 @@ TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
   EXPECT_TRUE(m.ring(centre, ring));  // interior
   EXPECT_EQ(ring.size(), 4u);
   EXPECT_FALSE(m.ring(a, ring));      // on the boundary
-  EXPECT_EQ(m.findEdge(a, b), kNone);
-  const std::uint32_t spoke = m.findEdge(centre, a);
+  EXPECT_EQ(m.findUndirectedEdge(a, b), kNone);
+  const std::uint32_t spoke = m.findUndirectedEdge(centre, a);
   ASSERT_NE(spoke, kNone);
   m.flip(spoke);  // links only: the new edge runs through the centre, which is flat here
   expectConsistent(m);
-  EXPECT_EQ(m.findEdge(centre, a), kNone);
+  EXPECT_EQ(m.findUndirectedEdge(centre, a), kNone);
   EXPECT_TRUE(m.ring(centre, ring));
   EXPECT_EQ(ring.size(), 3u);
-  const std::uint32_t into = m.vertex(ModifiableTriangulation::nextCorner(ring[0]));
+  const std::uint32_t into = m.vertex(Triangulation2D::nextCorner(ring[0]));
   m.collapse(centre, into, ring);
   expectConsistent(m);
   EXPECT_EQ(aliveCount(m), 2u);
