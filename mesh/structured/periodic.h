@@ -24,8 +24,9 @@ std::map<int, Periodicity> periodicCurves(const Model& model);
 // Meshes each curve of `links` as the image of its master's mesh (a master that is itself
 // periodic first), then links the end points of those curves to their masters' (the first
 // curve, by tag, decides for a point shared by several). Each new node is put on the slave's
-// geometry, with its parameter and its master node's target size. Throws MeshError naming the curve when its end points are not
-// the images of its master's, or when its geometry is not the image of the master's.
+// geometry, with its parameter and its master node's target size. Throws MeshError naming the
+// curve when its end points are not the images of its master's, or when its geometry is not
+// the image of the master's.
 void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links,
                         Mesh& mesh);
 

@@ -1,3 +1,4 @@
+// The rows of the 2D algorithm registry and the functions they call.
 #include "mesh/surfaces/surface_algorithms.h"
 
 #include <utility>

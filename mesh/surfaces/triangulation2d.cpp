@@ -1,3 +1,4 @@
+// Triangulation2D: storage, adjacency queries and the local operations (flip, split, collapse).
 #include "mesh/surfaces/triangulation2d.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The rows of the 3D algorithm registry.
 #include "mesh/volumes/volume_algorithms.h"
 
 #include "mesh/volumes/volume_mesher.h"
