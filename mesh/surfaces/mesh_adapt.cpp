@@ -54,9 +54,8 @@ double gamma(Vec2 a, Vec2 b, Vec2 c) {
 // constrained triangulation, as a background mesh.
 class BoundarySizes {
  public:
-  BoundarySizes(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-                const std::vector<double>& sizes)
-      : tri_(tri), inside_(inside), sizes_(sizes) {}
+  BoundarySizes(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside)
+      : tri_(tri), inside_(inside) {}
 
   // The size at x; `hint` is a domain triangle to start the search from, and becomes the
   // one x lies in.
@@ -73,13 +72,12 @@ class BoundarySizes {
     // Rounding may put x a hair outside: clamp to the triangle.
     l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
     const double sum = l0 + l1 + l2;
-    return (l0 * sizes_[v[0]] + l1 * sizes_[v[1]] + l2 * sizes_[v[2]]) / sum;
+    return (l0 * tri_.size(v[0]) + l1 * tri_.size(v[1]) + l2 * tri_.size(v[2])) / sum;
   }
 
  private:
   Triangulation2D tri_;  // a copy: locate() draws its own random numbers
   const std::vector<std::uint8_t>& inside_;
-  const std::vector<double>& sizes_;
 };
 
 // The domain's part of a triangulation: its boundary edges on the hull.
@@ -97,17 +95,19 @@ struct Edge {
 class MeshAdapter {
  public:
   MeshAdapter(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
-              const std::vector<double>& sizes, std::uint32_t firstMovable,
-              const SurfaceMetric* metric, const WorkPlaneSize* field)
-      : mesh_(domainOf(boundary, inside)), background_(boundary, inside, sizes), metric_(metric),
-        field_(field), firstMovable_(firstMovable), extended_(sizes),
-        target_(sizes.size()), hint_(sizes.size(), kNone), mark_(sizes.size(), 0),
-        touched_(sizes.size(), 0) {
+              std::uint32_t firstMovable, const SurfaceMetric* metric,
+              const WorkPlaneSize* field)
+      : mesh_(domainOf(boundary, inside)), background_(boundary, inside), metric_(metric),
+        field_(field), firstMovable_(firstMovable), target_(boundary.pointCount()),
+        hint_(boundary.pointCount(), kNone), mark_(boundary.pointCount(), 0),
+        touched_(boundary.pointCount(), 0) {
     for (std::uint32_t t = 0; t < boundary.triangleCount(); ++t)
       if (inside[t])
         for (int i = 0; i < 3; ++i) hint_[boundary.vertex(3 * t + i)] = t;
-    for (std::uint32_t v = 0; v < sizes.size(); ++v)
-      target_[v] = mesh_.inMesh(v) ? cappedByField(sizes[v], mesh_.point(v)) : sizes[v];
+    for (std::uint32_t v = 0; v < boundary.pointCount(); ++v) {
+      const double size = mesh_.size(v);
+      target_[v] = mesh_.inMesh(v) ? cappedByField(size, mesh_.point(v)) : size;
+    }
   }
 
   PlanarMesh run(int smoothingPasses);
@@ -148,12 +148,11 @@ class MeshAdapter {
   bool allPositiveAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
   PlanarMesh result() const;
 
-  Triangulation2D mesh_;  // the domain only
+  Triangulation2D mesh_;  // the domain only; its sizes are those extended from the boundary
   BoundarySizes background_;
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
   std::uint32_t firstMovable_;
-  std::vector<double> extended_;     // per vertex: size extended from the boundary
   std::vector<double> target_;       // per vertex: the size asked for (field included)
   std::vector<std::uint32_t> hint_;  // per vertex: where its size was found in background_
   std::vector<std::uint32_t> mark_;  // per vertex: stamps of the link test
@@ -179,8 +178,8 @@ double MeshAdapter::quality(Vec2 a, Vec2 b, Vec2 c) const {
 
 void MeshAdapter::updateSize(std::uint32_t v) {
   const Vec2 x = mesh_.point(v);
-  extended_[v] = background_.at(x, hint_[v]);
-  target_[v] = cappedByField(extended_[v], x);
+  mesh_.setSize(v, background_.at(x, hint_[v]));
+  target_[v] = cappedByField(mesh_.size(v), x);
 }
 
 // A field's size where it asks for one (a size that is not positive asks for nothing).
@@ -247,7 +246,6 @@ void MeshAdapter::split(std::uint32_t c) {
       orient2d(py, m, pu) <= 0)
     return;
   const std::uint32_t v = mesh_.addPoint(m);
-  extended_.push_back(0);
   target_.push_back(0);
   hint_.push_back(hint_[u]);
   mark_.push_back(0);
@@ -403,7 +401,7 @@ PlanarMesh MeshAdapter::result() const {
   PlanarMesh out;
   out.points.reserve(mesh_.pointCount());
   for (std::uint32_t v = 0; v < mesh_.pointCount(); ++v) out.points.push_back(mesh_.point(v));
-  out.sizes = extended_;
+  out.sizes.assign(mesh_.sizes().begin(), mesh_.sizes().end());
   for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t)
     if (mesh_.alive(t))
       for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) out.triangles.push_back(mesh_.vertex(c));
@@ -413,10 +411,9 @@ PlanarMesh MeshAdapter::result() const {
 }  // namespace
 
 PlanarMesh adaptMesh(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
-                     const std::vector<double>& sizes, std::uint32_t firstMovable,
-                     int smoothingPasses, const SurfaceMetric* metric,
-                     const WorkPlaneSize* field) {
-  return MeshAdapter(boundary, inside, sizes, firstMovable, metric, field).run(smoothingPasses);
+                     std::uint32_t firstMovable, int smoothingPasses,
+                     const SurfaceMetric* metric, const WorkPlaneSize* field) {
+  return MeshAdapter(boundary, inside, firstMovable, metric, field).run(smoothingPasses);
 }
 
 }  // namespace geomesh

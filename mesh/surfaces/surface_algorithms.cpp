@@ -1,8 +1,6 @@
 // The rows of the 2D algorithm registry and the functions they call.
 #include "mesh/surfaces/surface_algorithms.h"
 
-#include <utility>
-
 #include "mesh/surfaces/mesh_adapt.h"
 #include "mesh/surfaces/smoothing.h"
 
@@ -11,7 +9,9 @@ namespace {
 
 // The domain's triangles, with all the points of the triangulation.
 PlanarMesh domainMesh(SurfaceInterior& s) {
-  PlanarMesh out{{s.tri.points().begin(), s.tri.points().end()}, {}, std::move(s.sizes)};
+  PlanarMesh out{{s.tri.points().begin(), s.tri.points().end()},
+                 {},
+                 {s.tri.sizes().begin(), s.tri.sizes().end()}};
   for (std::uint32_t t = 0; t < s.tri.triangleCount(); ++t)
     if (s.inside[t])
       for (std::uint32_t i = 0; i < 3; ++i) out.triangles.push_back(s.tri.vertex(3 * t + i));
@@ -19,8 +19,7 @@ PlanarMesh domainMesh(SurfaceInterior& s) {
 }
 
 PlanarMesh meshAdapt(SurfaceInterior& s) {
-  return adaptMesh(s.tri, s.inside, s.sizes, s.firstMovable, s.smoothingPasses, s.metric,
-                   s.field);
+  return adaptMesh(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric, s.field);
 }
 
 PlanarMesh initialMeshOnly(SurfaceInterior& s) {
@@ -28,13 +27,13 @@ PlanarMesh initialMeshOnly(SurfaceInterior& s) {
 }
 
 PlanarMesh delaunay(SurfaceInterior& s) {
-  refineDelaunay(s.tri, s.inside, s.sizes, s.metric, s.field);
+  refineDelaunay(s.tri, s.inside, s.metric, s.field);
   smoothTriangulation(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric);
   return domainMesh(s);
 }
 
 PlanarMesh frontalDelaunay(SurfaceInterior& s) {
-  refineFrontal(s.tri, s.inside, s.sizes, s.metric, s.field);
+  refineFrontal(s.tri, s.inside, s.metric, s.field);
   smoothTriangulation(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric);
   return domainMesh(s);
 }
@@ -42,7 +41,7 @@ PlanarMesh frontalDelaunay(SurfaceInterior& s) {
 // Plain smoothing would pull the square cells out of shape: it may not lower the worst
 // quality.
 PlanarMesh frontalDelaunayQuads(SurfaceInterior& s) {
-  refineFrontalQuads(s.tri, s.inside, s.sizes, s.metric, s.field);
+  refineFrontalQuads(s.tri, s.inside, s.metric, s.field);
   smoothTriangulation(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric,
                       SmoothingGuard::WorstQuality);
   return domainMesh(s);

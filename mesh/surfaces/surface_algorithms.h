@@ -14,15 +14,14 @@
 
 namespace geomesh {
 
-// What a 2D algorithm fills: the constrained Delaunay triangulation of a surface's boundary
-// in its work plane, the triangles of the domain flagged in `inside`, the target size at
-// each vertex in `sizes` (extended from the boundary). Vertices from `firstMovable` on may
-// move; the others are boundary and embedded nodes. `metric` is null on planes; `field` is
-// the background size field, if any.
+// What a 2D algorithm fills: the constrained Delaunay triangulation of a surface's boundary in its
+// work plane, with the target size at each vertex (Triangulation2D::size, extended from the
+// boundary), the triangles of the domain flagged in `inside`. Vertices from `firstMovable` on may
+// move; the others are boundary and embedded nodes. `metric` is null on planes; `field` is the
+// background size field, if any.
 struct SurfaceInterior {
   Triangulation2D& tri;
   std::vector<std::uint8_t>& inside;
-  std::vector<double>& sizes;
   std::uint32_t firstMovable;
   int smoothingPasses;
   const SurfaceMetric* metric;

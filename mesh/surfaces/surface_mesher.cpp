@@ -91,16 +91,17 @@ Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Ve
   return tri;
 }
 
-// Target sizes at the triangulation's vertices. Extended from the boundary: the mean length
-// of the boundary segments at each boundary node (what the curve meshes actually realised,
-// so that the interior matches them), or the node's own size for an isolated embedded
-// point. Not extended: sizeMax everywhere.
-std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules,
-                                  const Mesh& mesh) {
-  std::vector<double> sizes(Triangulation2D::kFirstVertex, 0.0);
+// Sets the target sizes at the triangulation's vertices. Extended from the boundary: the mean
+// length of the boundary segments at each boundary node (what the curve meshes actually realised,
+// so that the interior matches them), or the node's own size for an isolated embedded point. Not
+// extended: sizeMax everywhere.
+void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh& mesh,
+                      Triangulation2D& tri) {
+  constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   if (!rules.extendFromBoundary) {
-    sizes.resize(sizes.size() + in.nodes.size(), rules.finish(rules.sizeMax));
-    return sizes;
+    for (std::uint32_t k = 0; k < in.nodes.size(); ++k)
+      tri.setSize(k + first, rules.finish(rules.sizeMax));
+    return;
   }
   std::vector<double> total(in.nodes.size(), 0.0);
   std::vector<int> count(in.nodes.size(), 0);
@@ -110,14 +111,13 @@ std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules
     ++count[s.a], ++count[s.b];
   }
   const double fallback = rules.finish(rules.defaultSize);
-  for (std::size_t k = 0; k < in.nodes.size(); ++k) {
+  for (std::uint32_t k = 0; k < in.nodes.size(); ++k) {
     const NodeIndex n = in.nodes[k];
     if (count[k] > 0)
-      sizes.push_back(total[k] / count[k]);
+      tri.setSize(k + first, total[k] / count[k]);
     else
-      sizes.push_back(mesh.nodeSize(n) > 0 ? mesh.nodeSize(n) : fallback);
+      tri.setSize(k + first, mesh.nodeSize(n) > 0 ? mesh.nodeSize(n) : fallback);
   }
-  return sizes;
 }
 
 // Copies the triangles and their new vertices into the surface's EntityMesh.
@@ -169,10 +169,10 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     return rules.finish(fields->at(g.point(frame.toParam(work)), id));
   };
   const bool withField = fields && fields->hasBackground();
-  std::vector<double> sizes = boundarySizes(in, rules, mesh);
+  setBoundarySizes(in, rules, mesh, tri);
   const std::uint32_t firstMovable =
       Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
-  SurfaceInterior interior{tri,          inside, sizes, firstMovable, smoothingPasses,
+  SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
                            g.isPlane() ? nullptr : &metric, withField ? &field : nullptr};
   const PlanarMesh planar = algorithm.mesh(interior);
 

@@ -28,6 +28,7 @@ Triangulation2D::Triangulation2D(Vec2 boxMin, Vec2 boxMax) {
 
 std::uint32_t Triangulation2D::addPoint(Vec2 p) {
   points_.push_back(p);
+  sizes_.push_back(0);
   vertexTriangle_.push_back(kNone);
   return static_cast<std::uint32_t>(points_.size() - 1);
 }
@@ -35,6 +36,7 @@ std::uint32_t Triangulation2D::addPoint(Vec2 p) {
 void Triangulation2D::removeLastPoint() {
   if (points_.empty() || vertexTriangle_.back() != kNone) return;
   points_.pop_back();
+  sizes_.pop_back();
   vertexTriangle_.pop_back();
 }
 

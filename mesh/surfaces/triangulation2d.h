@@ -42,6 +42,11 @@ class Triangulation2D {
   std::uint32_t addPoint(Vec2 p);  // stores a point; insert() or split() puts it in
   void removeLastPoint();          // forgets the last point stored, if it was not inserted
   std::size_t pointCount() const { return points_.size(); }
+  // The target size at each point, which refinement extends inwards from the boundary (0
+  // until set): one value per point, stored beside the coordinates.
+  double size(std::uint32_t v) const { return sizes_[v]; }
+  void setSize(std::uint32_t v, double size) { sizes_[v] = size; }
+  std::span<const double> sizes() const { return sizes_; }
   std::size_t triangleCount() const { return vertex_.size() / 3; }  // dead ones included
   bool alive(std::uint32_t t) const { return alive_[t] != 0; }
   Vec2 point(std::uint32_t v) const { return points_[v]; }
@@ -133,6 +138,7 @@ class Triangulation2D {
   std::uint32_t nextRandom();
 
   std::vector<Vec2> points_;
+  std::vector<double> sizes_;                  // per vertex: target size
   std::vector<std::uint32_t> vertexTriangle_;  // per vertex: a triangle around it, or kNone
   std::vector<std::uint32_t> vertex_, neighbour_;  // per corner
   std::vector<EdgeKind> kind_;                     // per corner

@@ -216,6 +216,24 @@ TEST(Triangulation2D, LocalOperationsAndInsertionShareTheTriangles) {
   expectValidTriangulation(tri);
 }
 
+// Target sizes are stored per point: one value for each, whatever adds or cuts.
+TEST(Triangulation2D, SizesStayInStepWithThePoints) {
+  Triangulation2D tri = constrainedSquare(20);
+  ASSERT_EQ(tri.sizes().size(), tri.pointCount());
+  for (std::uint32_t v = 0; v < tri.pointCount(); ++v) {
+    EXPECT_EQ(tri.size(v), 0);
+    tri.setSize(v, 1.0 + v);
+  }
+  const std::uint32_t extra = tri.addPoint({0.25, 0.25});
+  EXPECT_EQ(tri.sizes().size(), tri.pointCount());
+  EXPECT_EQ(tri.size(extra), 0);
+  tri.removeLastPoint();
+  EXPECT_EQ(tri.sizes().size(), tri.pointCount());
+  tri.keepTriangles(classifyInside(tri));
+  ASSERT_EQ(tri.sizes().size(), tri.pointCount());
+  for (std::uint32_t v = 0; v < tri.pointCount(); ++v) EXPECT_EQ(tri.size(v), 1.0 + v);
+}
+
 TEST(SpatialSort, IsADeterministicPermutationWithShortSteps) {
   const std::vector<Vec2> points = randomPoints(20000, 13);
   const std::vector<std::uint32_t> order = spatialOrder(points);
