@@ -33,8 +33,8 @@ FunctionRegistry::FunctionRegistry(std::span<const std::span<const ScriptFunctio
     for (const ScriptFunction& function : family)
       functions_.push_back(BuiltinFunction{function.name, nullptr, &function});
   std::sort(functions_.begin(), functions_.end(), byName);
-  const auto twice = std::adjacent_find(functions_.begin(), functions_.end(),
-                                        [](const auto& a, const auto& b) { return a.name == b.name; });
+  auto sameName = [](const auto& a, const auto& b) { return a.name == b.name; };
+  const auto twice = std::adjacent_find(functions_.begin(), functions_.end(), sameName);
   if (twice != functions_.end())
     throw std::logic_error("built-in function '" + std::string(twice->name) + "' defined twice");
   for (const auto& function : functions_) names_.emplace_back(function.name);

@@ -27,7 +27,8 @@ struct ScriptFunction {
   std::string_view name;
   std::size_t minArgs;
   std::size_t maxArgs;     // kAnyCount: no limit
-  std::string_view usage;  // the error for a wrong count; empty: "'Name' takes 2 to 3 arguments, not 4"
+  std::string_view usage;  // the error for a wrong count; empty: the generic one
+                           // ("'StrSub' takes 2 to 3 arguments, not 4")
   Value (*body)(Interpreter& interpreter, const ast::Expr& call);
 };
 

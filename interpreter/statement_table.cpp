@@ -29,6 +29,7 @@ std::string commandName(const ast::CommandStmt& command) {
 
 // Command keywords that start no statement of their own.
 constexpr std::string_view kNoStatement[] = {
+    // words that continue a statement: Characteristic Length, Curve Loop, Delete Physicals, ...
     "Closest", "Filling", "Length", "Loop", "Physicals", "QuadTriAddVerts", "QuadTriNoNewVerts",
     // inside expressions and blocks: Extrude{..}{ Layers{..}; }, PointsOf{..}, ShapeFromFile(..)
     "Layers", "PointsOf", "ShapeFromFile",

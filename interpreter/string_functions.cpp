@@ -95,9 +95,13 @@ std::span<const ScriptFunction> Interpreter::stringFunctions() {
       {"Sprintf", 1, 1000, "",
        [](Interpreter& in, Call call) { return Value::string(in.format(call.args, call.loc)); }},
       {"StrPrefix", 1, 1, "",
-       [](Interpreter& in, Call call) { return Value::string(withoutExtension(text(in, call, 0))); }},
+       [](Interpreter& in, Call call) {
+         return Value::string(withoutExtension(text(in, call, 0)));
+       }},
       {"StrRelative", 1, 1, "",
-       [](Interpreter& in, Call call) { return Value::string(withoutDirectory(text(in, call, 0))); }},
+       [](Interpreter& in, Call call) {
+         return Value::string(withoutDirectory(text(in, call, 0)));
+       }},
       {"DirName", 1, 1, "",
        [](Interpreter& in, Call call) {
          return Value::string(directoryWithSlash(text(in, call, 0)));
