@@ -56,12 +56,13 @@ Point(17) = {x2, y2, z2, lcIn};  Point(18) = {x1, y2, z2, lcIn};
 Line(21) = {11, 12};  Line(22) = {12, 13};  Line(23) = {13, 14};  Line(24) = {14, 11};
 Line(25) = {15, 16};  Line(26) = {16, 17};  Line(27) = {17, 18};  Line(28) = {18, 15};
 Line(29) = {11, 15};  Line(30) = {12, 16};  Line(31) = {13, 17};  Line(32) = {14, 18};
-Curve Loop(21) = {-24, -23, -22, -21};  Plane Surface(21) = {21};
-Curve Loop(22) = {25, 26, 27, 28};      Plane Surface(22) = {22};
-Curve Loop(23) = {21, 30, -25, -29};    Plane Surface(23) = {23};
-Curve Loop(24) = {22, 31, -26, -30};    Plane Surface(24) = {24};
-Curve Loop(25) = {23, 32, -27, -31};    Plane Surface(25) = {25};
-Curve Loop(26) = {24, 29, -28, -32};    Plane Surface(26) = {26};
+// Out of the housing, here, is into the chamber: these loops turn the other way.
+Curve Loop(21) = {21, 22, 23, 24};      Plane Surface(21) = {21};
+Curve Loop(22) = {-28, -27, -26, -25};  Plane Surface(22) = {22};
+Curve Loop(23) = {29, 25, -30, -21};    Plane Surface(23) = {23};
+Curve Loop(24) = {30, 26, -31, -22};    Plane Surface(24) = {24};
+Curve Loop(25) = {31, 27, -32, -23};    Plane Surface(25) = {25};
+Curve Loop(26) = {32, 28, -29, -24};    Plane Surface(26) = {26};
 Surface Loop(2) = {21:26};
 
 // The solid: what is inside loop 1 and outside loop 2. Further loops would be further
