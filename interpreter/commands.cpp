@@ -88,8 +88,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
     return;
   }
   if (head == "SetFactory" && command.args.size() == 1) {
-    const std::string factory = evaluateString(*command.args[0]);
-    if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
+    if (session_.factories().select(evaluateString(*command.args[0]))) return;
   }
   warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
 }
@@ -198,7 +197,7 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
 // Options the geometry kernel reads while entities are defined take effect at once.
 void Interpreter::optionChanged(const std::string& name) {
   if (name == "Geometry.Tolerance")
-    session_.geo().setTolerance(session_.options().number("Geometry.Tolerance"));
+    session_.factory().setTolerance(session_.options().number("Geometry.Tolerance"));
 }
 
 Value Interpreter::optionValue(const ast::Expr& expr) {

@@ -1,6 +1,8 @@
 #include "kernel/occ/occ_factory.h"
 
+#include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
@@ -98,8 +100,42 @@ double OccFactory::volume(int tag) const {
   return properties.Mass();
 }
 
-int OccFactory::maxTag(int dim) const {
-  return dim >= 0 && dim <= 3 ? shapes_->maxTag(dim) : 0;
+int OccFactory::maxTag(int kind) const {
+  return kind >= 0 && kind <= 3 ? shapes_->maxTag(kind) : 0;
+}
+
+bool OccFactory::contains(EntityId e) const {
+  return e.dim >= 0 && e.dim <= 3 && shapes_->byTag[e.dim].contains(e.tag);
+}
+
+std::vector<int> OccFactory::tags(int dim) const {
+  std::vector<int> tags;
+  if (dim >= 0 && dim <= 3)
+    for (const auto& entry : shapes_->byTag[dim]) tags.push_back(entry.first);
+  return tags;
+}
+
+Vec3 OccFactory::pointCoordinates(int tag) const {
+  if (!contains({0, tag})) throw GeometryError("Point " + std::to_string(tag) + " is not defined");
+  const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shapes_->byTag[0].at(tag)));
+  return {p.X(), p.Y(), p.Z()};
+}
+
+// The box of the shape's vertices and of its curves and surfaces, tight (not enlarged by
+// OpenCASCADE's tolerances).
+BoundingBox OccFactory::boundingBox(EntityId shape) const {
+  if (!contains(shape))
+    throw GeometryError("BoundingBox: entity (" + std::to_string(shape.dim) + ", " +
+                        std::to_string(shape.tag) + ") is not defined");
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shapes_->byTag[shape.dim].at(shape.tag), box, false, false);
+  BoundingBox result;
+  if (box.IsVoid()) return result;
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  result.include(Vec3{x0, y0, z0});
+  result.include(Vec3{x1, y1, z1});
+  return result;
 }
 
 void OccFactory::clear() { shapes_ = std::make_unique<OccShapes>(); }
