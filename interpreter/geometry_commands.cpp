@@ -1,4 +1,4 @@
-// Geometry statements that map onto the built-in factory: Point, Line, Curve Loop, Plane
+// Geometry statements that map onto the selected factory: Point, Line, Curve Loop, Plane
 // Surface, Surface Loop, Volume, Physical groups; and shapes used as values (Point{t}).
 #include <algorithm>
 #include <cmath>
@@ -166,9 +166,9 @@ void Interpreter::reportHandover(const UnsupportedOperation& unsupported) {
       "Plane Surface"};
   const bool defines = std::find(std::begin(kDefinitions), std::end(kDefinitions),
                                  unsupported.operation()) != std::end(kDefinitions);
-  warn(statementLocation_ ? *statementLocation_ : SourceLocation{}, "'" + unsupported.operation() + "' is not supported by the " +
-                               unsupported.factory() + " factory yet; the built-in kernel " +
-                               (defines ? "builds it" : "carries it out"));
+  warn(statementLocation_ ? *statementLocation_ : SourceLocation{},
+       "'" + unsupported.operation() + "' is not supported by the " + unsupported.factory() +
+           " factory yet; the built-in kernel " + (defines ? "builds it" : "carries it out"));
 }
 
 // Circle(tag) = {start, center, end}: an arc of at most half a turn. Other forms (the

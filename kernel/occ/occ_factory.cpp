@@ -30,6 +30,7 @@ namespace geomesh {
 struct OccShapes {
   std::map<int, TopoDS_Shape> byTag[4];
   TopTools_DataMapOfShapeInteger tags[4];
+  std::map<int, double> meshSizes;  // vertex tag -> MeshSize
 
   int tagOf(int dim, const TopoDS_Shape& s) const { return tags[dim].Find(s); }
   int maxTag(int dim) const { return byTag[dim].empty() ? 0 : byTag[dim].rbegin()->first; }
@@ -121,6 +122,39 @@ Vec3 OccFactory::pointCoordinates(int tag) const {
   return {p.X(), p.Y(), p.Z()};
 }
 
+namespace {
+
+// The shape of (dim, |tag|); throws GeometryError naming `operation` when there is none.
+const TopoDS_Shape& requireShape(const OccShapes& s, EntityId shape, const char* operation) {
+  const int tag = shape.tag < 0 ? -shape.tag : shape.tag;
+  if (shape.dim >= 0 && shape.dim <= 3)
+    if (auto it = s.byTag[shape.dim].find(tag); it != s.byTag[shape.dim].end()) return it->second;
+  throw GeometryError(std::string(operation) + ": entity (" + std::to_string(shape.dim) + ", " +
+                      std::to_string(tag) + ") is not defined");
+}
+
+}  // namespace
+
+std::vector<int> OccFactory::pointsOf(const std::vector<EntityId>& shapes) const {
+  for (EntityId shape : shapes) requireShape(*shapes_, shape, "PointsOf");
+  std::vector<int> points;
+  for (EntityId shape : shapes) {
+    const TopoDS_Shape& s = requireShape(*shapes_, shape, "PointsOf");
+    for (TopExp_Explorer it(s, TopAbs_VERTEX); it.More(); it.Next()) {
+      const int tag = shapes_->tagOf(0, it.Current());
+      if (std::find(points.begin(), points.end(), tag) == points.end()) points.push_back(tag);
+    }
+  }
+  return points;
+}
+
+void OccFactory::setMeshSize(const std::vector<int>& points, double size) {
+  for (int p : points)
+    if (!contains({0, p}))
+      throw GeometryError("MeshSize: point " + std::to_string(p) + " is not defined");
+  for (int p : points) shapes_->meshSizes[p] = size;
+}
+
 // The box of the shape's vertices and of its curves and surfaces, tight (not enlarged by
 // OpenCASCADE's tolerances).
 BoundingBox OccFactory::boundingBox(EntityId shape) const {
@@ -161,7 +195,9 @@ namespace {
 void exportPoints(const OccShapes& s, Model& model) {
   for (const auto& [tag, shape] : s.byTag[0]) {
     const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shape));
-    model.addPoint(ModelPoint{tag, {p.X(), p.Y(), p.Z()}, 0});
+    const auto size = s.meshSizes.find(tag);
+    model.addPoint(
+        ModelPoint{tag, {p.X(), p.Y(), p.Z()}, size == s.meshSizes.end() ? 0 : size->second});
   }
 }
 

@@ -32,6 +32,10 @@ class OccFactory final : public GeometryFactory {
   std::vector<int> tags(int dim) const override;
   Vec3 pointCoordinates(int tag) const override;  // throws GeometryError if undefined
   BoundingBox boundingBox(EntityId shape) const override;  // throws if undefined
+  // PointsOf{..}: the vertices of the shapes, once each, in OpenCASCADE's exploration order.
+  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const override;
+  // MeshSize{points} = size: the prescribed mesh size at those vertices.
+  void setMeshSize(const std::vector<int>& points, double size) override;
 
   // Adds (or replaces) this factory's entities in the model; other entities are kept.
   void synchronize(Model& model) const override;

@@ -75,6 +75,16 @@ TEST(SetFactory, PhysicalGroupsNameBoxes) {
   EXPECT_EQ(groups.at({3, 7}).entities, std::vector<int>{1});
 }
 
+TEST(SetFactory, MeshSizesAtTheBoxsPoints) {
+  ScriptRun run;
+  run.run("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+          "MeshSize{PointsOf{Volume{1};}} = 0.3;\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  run.session.synchronize();
+  for (const auto& [tag, point] : run.session.model().points())
+    EXPECT_EQ(point.meshSize, 0.3) << "point " << tag;
+}
+
 TEST(SetFactory, BuiltInKernelBuildsWhatOpenCascadeCannotYetAndSaysSoOnce) {
   ScriptRun run;
   run.run("SetFactory(\"OpenCASCADE\");\n"

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -51,6 +52,23 @@ TEST(OccFactory, AnswersQueriesAboutItsShapes) {
   const Vec3 p = occ.pointCoordinates(1);
   EXPECT_TRUE(p.x == 1 || p.x == 2);
   EXPECT_THROW(occ.pointCoordinates(9), GeometryError);
+}
+
+TEST(OccFactory, PointsOfAndMeshSizes) {
+  OccFactory occ;
+  occ.addBox(1, {0, 0, 0}, {1, 1, 1});
+  std::vector<int> points = occ.pointsOf({{3, 1}});
+  std::sort(points.begin(), points.end());
+  EXPECT_EQ(points, (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8}));
+  EXPECT_EQ(occ.pointsOf({{1, -1}}).size(), 2u);
+  EXPECT_THROW(occ.pointsOf({{3, 2}}), GeometryError);
+  occ.setMeshSize({2, 5}, 0.25);
+  EXPECT_THROW(occ.setMeshSize({9}, 0.25), GeometryError);
+  Model model;
+  occ.synchronize(model);
+  EXPECT_EQ(model.point(2)->meshSize, 0.25);
+  EXPECT_EQ(model.point(5)->meshSize, 0.25);
+  EXPECT_EQ(model.point(1)->meshSize, 0);
 }
 
 // Records the operations handed over.
