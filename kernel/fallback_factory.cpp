@@ -71,8 +71,13 @@ const std::map<EntityId, PhysicalGroup>& FallbackFactory::physicalGroups() const
   return fallback_.physicalGroups();
 }
 
+// The primary's points get their size from the primary, the others from the fallback.
 void FallbackFactory::setMeshSize(const std::vector<int>& points, double size) {
-  route([&](GeometryFactory& f) { f.setMeshSize(points, size); });
+  std::vector<int> primaryPoints, others;
+  for (int p : points) (primary_.contains({0, p}) ? primaryPoints : others).push_back(p);
+  if (!primaryPoints.empty())
+    route([&](GeometryFactory& f) { f.setMeshSize(primaryPoints, size); });
+  if (!others.empty() || points.empty()) fallback_.setMeshSize(others, size);
 }
 void FallbackFactory::addCompound(int dim, const std::vector<int>& tags) {
   route([&](GeometryFactory& f) { f.addCompound(dim, tags); });
@@ -131,8 +136,19 @@ Vec3 FallbackFactory::pointCoordinates(int tag) const {
   return primary_.contains({0, tag}) ? primary_.pointCoordinates(tag)
                                      : fallback_.pointCoordinates(tag);
 }
+// Each shape's points come from the factory that holds it.
 std::vector<int> FallbackFactory::pointsOf(const std::vector<EntityId>& shapes) const {
-  return route([&](GeometryFactory& f) { return f.pointsOf(shapes); });
+  std::vector<int> points;
+  for (EntityId shape : shapes) {
+    const EntityId positive{shape.dim, shape.tag < 0 ? -shape.tag : shape.tag};
+    const std::vector<int> more =
+        primary_.contains(positive)
+            ? route([&](GeometryFactory& f) { return f.pointsOf({shape}); })
+            : fallback_.pointsOf({shape});
+    for (int p : more)
+      if (std::find(points.begin(), points.end(), p) == points.end()) points.push_back(p);
+  }
+  return points;
 }
 BoundingBox FallbackFactory::boundingBox(EntityId shape) const {
   const EntityId positive{shape.dim, shape.tag < 0 ? -shape.tag : shape.tag};

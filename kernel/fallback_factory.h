@@ -10,7 +10,8 @@ namespace geomesh {
 // While a factory is incomplete (the OpenCASCADE one builds boxes only), scripts selecting it
 // lose nothing: every operation goes to `primary` first, and when that throws
 // UnsupportedOperation, to `fallback`, after telling the handover callback. Queries combine
-// both (maxTag: the larger; contains: either; a point's coordinates: from its owner).
+// both (maxTag: the larger; contains: either; a point's coordinates: from its owner); mesh
+// sizes and PointsOf go to the factory holding each point or shape.
 // Physical groups and Geometry.Tolerance live in the fallback, which synchronizes last, so
 // that its groups may name entities of both.
 class FallbackFactory final : public GeometryFactory {

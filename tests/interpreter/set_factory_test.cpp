@@ -85,6 +85,15 @@ TEST(SetFactory, MeshSizesAtTheBoxsPoints) {
     EXPECT_EQ(point.meshSize, 0.3) << "point " << tag;
 }
 
+TEST(SetFactory, MeshSizesAtPointsOfBothFactories) {
+  ScriptRun run;
+  run.run("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+          "Point(100) = {3, 0, 0};\nMeshSize{1, 100} = 0.2;\n");
+  run.session.synchronize();
+  EXPECT_EQ(run.session.model().point(1)->meshSize, 0.2);
+  EXPECT_EQ(run.session.model().point(100)->meshSize, 0.2);
+}
+
 TEST(SetFactory, BuiltInKernelBuildsWhatOpenCascadeCannotYetAndSaysSoOnce) {
   ScriptRun run;
   run.run("SetFactory(\"OpenCASCADE\");\n"

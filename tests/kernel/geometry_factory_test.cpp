@@ -112,6 +112,26 @@ TEST(FallbackFactory, HandsOverWhatThePrimaryCannotDo) {
   EXPECT_EQ(model.physicalGroups().at({3, 1}).entities, std::vector<int>{1});
 }
 
+TEST(FallbackFactory, SizesAndPointsOfGoToTheFactoryHoldingThem) {
+  OccFactory occ;
+  GeoFactory geo;
+  FallbackFactory factory(occ, geo);
+  Handovers handovers;
+  factory.onHandover(handovers.callback());
+  factory.addBox(1, {0, 0, 0}, {1, 1, 1});
+  geo.addPoint(20, {5, 0, 0}, 0);
+  factory.setMeshSize({1, 20}, 0.5);
+  EXPECT_EQ(geo.points().at(20).meshSize, 0.5);
+  std::vector<int> points = factory.pointsOf({{0, 20}, {3, 1}});
+  EXPECT_EQ(points.size(), 9u);
+  EXPECT_EQ(points.front(), 20);
+  EXPECT_TRUE(handovers.operations.empty());
+  EXPECT_THROW(factory.setMeshSize({99}, 1), GeometryError);
+  Model model;
+  factory.synchronize(model);
+  EXPECT_EQ(model.point(1)->meshSize, 0.5);
+}
+
 TEST(FallbackFactory, ErrorsOfTheFallbackPassThrough) {
   OccFactory occ;
   GeoFactory geo;
