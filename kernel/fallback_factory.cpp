@@ -155,8 +155,18 @@ BoundingBox FallbackFactory::boundingBox(EntityId shape) const {
   return primary_.contains(positive) ? primary_.boundingBox(shape)
                                       : fallback_.boundingBox(shape);
 }
+// Those of both factories, in ascending tags.
 std::vector<int> FallbackFactory::entitiesInBox(int dim, const BoundingBox& box) const {
-  return route([&](GeometryFactory& f) { return f.entitiesInBox(dim, box); });
+  std::vector<int> tags = fallback_.entitiesInBox(dim, box);
+  try {
+    const std::vector<int> more = primary_.entitiesInBox(dim, box);
+    tags.insert(tags.end(), more.begin(), more.end());
+  } catch (const UnsupportedOperation&) {
+    // the fallback's entities are all there is to find
+  }
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  return tags;
 }
 
 void FallbackFactory::setTolerance(double relativeTolerance) {

@@ -135,6 +135,20 @@ const TopoDS_Shape& requireShape(const OccShapes& s, EntityId shape, const char*
 
 }  // namespace
 
+std::vector<int> OccFactory::entitiesInBox(int dim, const BoundingBox& box) const {
+  std::vector<int> inside;
+  if (dim < 0 || dim > 3 || box.empty()) return inside;
+  const double tol = 1e-8 * distance(box.min, box.max);
+  auto within = [&](const BoundingBox& b) {
+    return !b.empty() && b.min.x >= box.min.x - tol && b.min.y >= box.min.y - tol &&
+           b.min.z >= box.min.z - tol && b.max.x <= box.max.x + tol &&
+           b.max.y <= box.max.y + tol && b.max.z <= box.max.z + tol;
+  };
+  for (const auto& [tag, shape] : shapes_->byTag[dim])
+    if (within(boundingBox({dim, tag}))) inside.push_back(tag);
+  return inside;
+}
+
 std::vector<int> OccFactory::pointsOf(const std::vector<EntityId>& shapes) const {
   for (EntityId shape : shapes) requireShape(*shapes_, shape, "PointsOf");
   std::vector<int> points;

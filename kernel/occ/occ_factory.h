@@ -32,6 +32,8 @@ class OccFactory final : public GeometryFactory {
   std::vector<int> tags(int dim) const override;
   Vec3 pointCoordinates(int tag) const override;  // throws GeometryError if undefined
   BoundingBox boundingBox(EntityId shape) const override;  // throws if undefined
+  // Entities of `dim` whose bounding box is inside `box` (to 1e-8 of the box's diagonal).
+  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const override;
   // PointsOf{..}: the vertices of the shapes, once each, in OpenCASCADE's exploration order.
   std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const override;
   // MeshSize{points} = size: the prescribed mesh size at those vertices.

@@ -94,6 +94,16 @@ TEST(SetFactory, MeshSizesAtPointsOfBothFactories) {
   EXPECT_EQ(run.session.model().point(100)->meshSize, 0.2);
 }
 
+TEST(SetFactory, EntitiesInABoundingBoxOfBothFactories) {
+  EXPECT_EQ(printed("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+                    "Point(100) = {0.5, 0.5, 2};\nPoint(101) = {0.5, 0.5, 9};\n"
+                    "p() = Point In BoundingBox{-1, -1, 0.5, 2, 2, 3};\n"
+                    "s() = Surface In BoundingBox{-1, -1, 0.5, 2, 2, 3};\n"
+                    "v() = Volume In BoundingBox{-1, -1, -1, 2, 2, 2};\n"
+                    "Printf(\"%g %g %g %g\", #p(), p(#p() - 1), #s(), #v());"),
+            "5 100 1 1\n");
+}
+
 TEST(SetFactory, BuiltInKernelBuildsWhatOpenCascadeCannotYetAndSaysSoOnce) {
   ScriptRun run;
   run.run("SetFactory(\"OpenCASCADE\");\n"
