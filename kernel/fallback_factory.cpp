@@ -105,9 +105,19 @@ std::vector<EntityId> FallbackFactory::duplicate(const std::vector<EntityId>& sh
 void FallbackFactory::remove(const std::vector<EntityId>& shapes, bool recursive) {
   route([&](GeometryFactory& f) { f.remove(shapes, recursive); });
 }
+// Each shape's boundary comes from the factory that holds it.
 std::vector<EntityId> FallbackFactory::boundary(const std::vector<EntityId>& shapes,
                                                 bool combined) const {
-  return route([&](GeometryFactory& f) { return f.boundary(shapes, combined); });
+  std::vector<EntityId> out;
+  for (EntityId shape : shapes) {
+    const EntityId positive{shape.dim, shape.tag < 0 ? -shape.tag : shape.tag};
+    const std::vector<EntityId> more =
+        primary_.contains(positive)
+            ? route([&](GeometryFactory& f) { return f.boundary({shape}, false); })
+            : fallback_.boundary({shape}, false);
+    out.insert(out.end(), more.begin(), more.end());
+  }
+  return combined ? cancelShared(out) : out;
 }
 std::vector<EntityId> FallbackFactory::extrude(const std::vector<EntityId>& shapes,
                                                const ExtrusionMotion& motion,

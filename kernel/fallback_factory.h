@@ -11,7 +11,7 @@ namespace geomesh {
 // lose nothing: every operation goes to `primary` first, and when that throws
 // UnsupportedOperation, to `fallback`, after telling the handover callback. Queries combine
 // both (maxTag: the larger; contains: either; a point's coordinates: from its owner); mesh
-// sizes and PointsOf go to the factory holding each point or shape.
+// sizes, PointsOf and Boundary go to the factory holding each point or shape.
 // Physical groups and Geometry.Tolerance live in the fallback, which synchronizes last, so
 // that its groups may name entities of both.
 class FallbackFactory final : public GeometryFactory {

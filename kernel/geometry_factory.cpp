@@ -1,5 +1,8 @@
-// The operations a factory does not override: each throws UnsupportedOperation.
+// The operations a factory does not override (each throws UnsupportedOperation), and what
+// factories share.
 #include "kernel/geometry_factory.h"
+
+#include <map>
 
 namespace geomesh {
 
@@ -74,6 +77,15 @@ double GeometryFactory::tolerance() const { unsupported("Geometry.Tolerance"); }
 
 void GeometryFactory::writeUnrolled(std::ostream&, const UnrolledGeoHooks&) const {
   unsupported("geo_unrolled");
+}
+
+std::vector<EntityId> cancelShared(const std::vector<EntityId>& boundaries) {
+  std::map<EntityId, int> count;
+  for (EntityId e : boundaries) ++count[e];
+  std::vector<EntityId> kept;
+  for (const auto& [e, n] : count)
+    if (n == 1) kept.push_back(e);
+  return kept;
 }
 
 }  // namespace geomesh

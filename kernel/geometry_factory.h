@@ -99,4 +99,8 @@ class GeometryFactory {
   [[noreturn]] void unsupported(const std::string& operation) const;
 };
 
+// CombinedBoundary: of the boundaries of several shapes, the entities bounding only one of
+// them (those shared by two cancel out), in ascending (dim, tag).
+std::vector<EntityId> cancelShared(const std::vector<EntityId>& boundaries);
+
 }  // namespace geomesh

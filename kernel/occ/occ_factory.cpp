@@ -17,8 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_geometry.h"
@@ -261,5 +263,31 @@ void exportVolumes(const OccShapes& s, Model& model) {
 }
 
 }  // namespace
+
+std::vector<EntityId> OccFactory::boundary(const std::vector<EntityId>& shapes,
+                                           bool combined) const {
+  for (EntityId shape : shapes) requireShape(*shapes_, shape, "Boundary");
+  std::vector<EntityId> out;
+  for (EntityId shape : shapes) {
+    const TopoDS_Shape& s = requireShape(*shapes_, shape, "Boundary");
+    if (shape.dim == 1) {
+      const TopoDS_Edge edge = TopoDS::Edge(s.Oriented(TopAbs_FORWARD));
+      int ends[2] = {shapes_->tagOf(0, TopExp::FirstVertex(edge)),
+                     shapes_->tagOf(0, TopExp::LastVertex(edge))};
+      if (shape.tag < 0) std::swap(ends[0], ends[1]);
+      out.push_back({0, ends[0]});
+      out.push_back({0, ends[1]});
+    } else if (shape.dim == 2) {
+      const TopoDS_Face face = TopoDS::Face(s.Oriented(TopAbs_FORWARD));
+      for (TopExp_Explorer wire(face, TopAbs_WIRE); wire.More(); wire.Next())
+        for (int c : wireLoop(*shapes_, face, TopoDS::Wire(wire.Current())))
+          out.push_back({1, std::abs(c)});
+    } else if (shape.dim == 3) {
+      for (TopExp_Explorer face(s, TopAbs_FACE); face.More(); face.Next())
+        out.push_back({2, shapes_->tagOf(2, face.Current())});
+    }
+  }
+  return combined ? cancelShared(out) : out;
+}
 
 }  // namespace geomesh

@@ -34,6 +34,11 @@ class OccFactory final : public GeometryFactory {
   BoundingBox boundingBox(EntityId shape) const override;  // throws if undefined
   // Entities of `dim` whose bounding box is inside `box` (to 1e-8 of the box's diagonal).
   std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const override;
+  // Boundary{..}: as the built-in factory gives it (see GeoFactory::boundary): a curve's ends
+  // in its direction, a surface's curves in loop order and a volume's surfaces in shell order,
+  // as positive tags; combined: shared entities cancel, the others in ascending tags.
+  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes,
+                                 bool combined) const override;
   // PointsOf{..}: the vertices of the shapes, once each, in OpenCASCADE's exploration order.
   std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const override;
   // MeshSize{points} = size: the prescribed mesh size at those vertices.

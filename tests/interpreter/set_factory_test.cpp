@@ -104,6 +104,19 @@ TEST(SetFactory, EntitiesInABoundingBoxOfBothFactories) {
             "5 100 1 1\n");
 }
 
+TEST(SetFactory, BoundaryOfABox) {
+  ScriptRun run;
+  run.run("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+          "Box(2) = {1, 0, 0, 1, 1, 1};\n"
+          "Physical Surface(\"walls\") = Boundary{Volume{1};};\n"
+          "c() = CombinedBoundary{Volume{1}; Volume{2};};\nPrintf(\"%g\", #c());\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  EXPECT_EQ(run.out.str(), "12\n");  // the boxes touch but are not glued: no face is shared
+  run.session.synchronize();
+  EXPECT_EQ(run.session.model().physicalGroups().begin()->second.entities,
+            (std::vector<int>{1, 2, 3, 4, 5, 6}));
+}
+
 TEST(SetFactory, BuiltInKernelBuildsWhatOpenCascadeCannotYetAndSaysSoOnce) {
   ScriptRun run;
   run.run("SetFactory(\"OpenCASCADE\");\n"

@@ -71,6 +71,32 @@ TEST(OccFactory, PointsOfAndMeshSizes) {
   EXPECT_EQ(model.point(1)->meshSize, 0);
 }
 
+TEST(OccFactory, BoundaryOfTheBoxsShapes) {
+  OccFactory occ;
+  occ.addBox(1, {0, 0, 0}, {1, 1, 1});
+  const std::vector<EntityId> faces = occ.boundary({{3, 1}}, false);
+  ASSERT_EQ(faces.size(), 6u);
+  for (EntityId f : faces) EXPECT_EQ(f.dim, 2);
+  EXPECT_EQ(occ.boundary({{2, 1}}, false).size(), 4u);
+  const std::vector<EntityId> ends = occ.boundary({{1, 1}}, false);
+  ASSERT_EQ(ends.size(), 2u);
+  const std::vector<EntityId> reversed = occ.boundary({{1, -1}}, false);
+  EXPECT_EQ(reversed[0], ends[1]);
+  EXPECT_EQ(reversed[1], ends[0]);
+  Model model;
+  occ.synchronize(model);
+  EXPECT_EQ(model.curve(1)->startPoint, ends[0].tag);
+  // Two faces of the box share one edge: 4 + 4 - 2.
+  std::vector<EntityId> shared;
+  for (int face = 2; face <= 6 && shared.empty(); ++face)
+    if (cancelShared(occ.boundary({{2, 1}, {2, face}}, false)).size() == 6)
+      shared = occ.boundary({{2, 1}, {2, face}}, true);
+  EXPECT_EQ(shared.size(), 6u);
+  EXPECT_TRUE(std::is_sorted(shared.begin(), shared.end()));
+  EXPECT_TRUE(occ.boundary({{3, 1}}, true).size() == 6u);
+  EXPECT_THROW(occ.boundary({{3, 2}}, false), GeometryError);
+}
+
 // Records the operations handed over.
 struct Handovers {
   std::vector<std::string> operations;
