@@ -11,7 +11,8 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_factory.cpp)
 // The OpenCASCADE geometry kernel (SetFactory("OpenCASCADE") in scripts). Shapes are built
 // one call at a time; synchronize() exports them, with every vertex, edge, face and solid, to
 // the Model with OpenCASCADE-backed geometry. OpenCASCADE itself stays behind this interface.
-// It builds boxes only, so far: the other operations throw UnsupportedOperation.
+// So far it builds boxes, answers queries about its shapes and takes mesh sizes at their
+// points; the other operations throw UnsupportedOperation.
 class OccFactory final : public GeometryFactory {
  public:
   OccFactory();
