@@ -190,10 +190,9 @@ void Interpreter::executePeriodicSurface(const ast::CommandStmt& command,
                                          const SourceLocation& where) {
   if (command.shape || command.args.size() != 4) return executePeriodic(command, where);
   try {
-    session_.factory().setPeriodicByCurves(clampedInteger<int>(evaluateNumber(*command.args[0])),
-                                       entityTags(*command.args[1]),
-                                       clampedInteger<int>(evaluateNumber(*command.args[2])),
-                                       entityTags(*command.args[3]));
+    session_.factory().setPeriodicByCurves(
+        clampedInteger<int>(evaluateNumber(*command.args[0])), entityTags(*command.args[1]),
+        clampedInteger<int>(evaluateNumber(*command.args[2])), entityTags(*command.args[3]));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -207,8 +206,9 @@ void Interpreter::executePeriodic(const ast::CommandStmt& command, const SourceL
   if (!transformed) return unsupportedStatement(command, where);
   const int dim = entityDimension({command.words[1]});
   try {
-    session_.factory().setPeriodic(dim, shapeTags(*command.shape, dim), entityTags(*command.value),
-                               transformMap(*command.tail[0].value));
+    session_.factory().setPeriodic(dim, shapeTags(*command.shape, dim),
+                                   entityTags(*command.value),
+                                   transformMap(*command.tail[0].value));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
