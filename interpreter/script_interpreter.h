@@ -164,6 +164,9 @@ class Interpreter {
   std::optional<double> modelStatistic(std::string_view name);
   void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
+  // The shapes of the CAD file `name` names (relative to the script), added to the
+  // OpenCASCADE factory; fails at `name` when it cannot be read.
+  std::vector<EntityId> importShapes(const ast::Expr& name);
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);
 
   // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)

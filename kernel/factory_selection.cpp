@@ -34,6 +34,10 @@ void FactorySelection::onHandover(FallbackFactory::Handover handover) {
   factories_->occFirst.onHandover(std::move(handover));
 }
 
+std::vector<EntityId> FactorySelection::importShapes(const std::string& path) {
+  return factories_->occ.importShapes(path);
+}
+
 // The built-in factory goes last: its physical groups may name OpenCASCADE entities.
 void FactorySelection::synchronize(Model& model) const {
   model.clear();

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "kernel/fallback_factory.h"
 
@@ -24,6 +25,10 @@ class FactorySelection {
   bool select(const std::string& name);
   // Told of every operation the selected factory hands over to the built-in one.
   void onHandover(FallbackFactory::Handover handover);
+
+  // The shapes of a BREP, STEP or IGES file, added to the OpenCASCADE factory whichever is
+  // selected (see OccFactory::importShapes); returns the top-level entities.
+  std::vector<EntityId> importShapes(const std::string& path);
 
   // Clears the model's entities, then adds those of every factory.
   void synchronize(Model& model) const;

@@ -94,6 +94,21 @@ int OccFactory::addBox(int tag, Vec3 corner, Vec3 extent) {
   return tag;
 }
 
+std::vector<EntityId> OccFactory::bindTopLevel(const TopoDS_Shape& shape) {
+  static constexpr TopAbs_ShapeEnum kTypes[4] = {TopAbs_VERTEX, TopAbs_EDGE, TopAbs_FACE,
+                                                 TopAbs_SOLID};
+  std::vector<EntityId> top;
+  for (int dim = 3; dim >= 0; --dim)
+    for (TopExp_Explorer it(shape, kTypes[dim]); it.More(); it.Next()) {
+      if (shapes_->tags[dim].IsBound(it.Current())) continue;
+      const int tag = shapes_->maxTag(dim) + 1;
+      shapes_->bind(dim, tag, it.Current());
+      shapes_->bindNewSubShapes(it.Current());
+      top.push_back({dim, tag});
+    }
+  return top;
+}
+
 double OccFactory::volume(int tag) const {
   auto it = shapes_->byTag[3].find(tag);
   if (it == shapes_->byTag[3].end())
@@ -240,7 +255,8 @@ std::vector<int> wireLoop(const OccShapes& s, const TopoDS_Face& face,
 void exportSurfaces(const OccShapes& s, Model& model) {
   for (const auto& [tag, shape] : s.byTag[2]) {
     const TopoDS_Face face = TopoDS::Face(shape.Oriented(TopAbs_FORWARD));
-    ModelSurface surface{tag, {}, makeOccSurface(face), {}, {}};
+    const auto edgeTag = [&s](const TopoDS_Edge& e) { return signedTag(s.tagOf(1, e), e); };
+    ModelSurface surface{tag, {}, makeOccSurface(face, edgeTag), {}, {}};
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
     surface.loops.push_back(wireLoop(s, face, outer));
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())

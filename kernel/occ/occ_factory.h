@@ -1,8 +1,12 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "kernel/geometry_factory.h"
+
+class TopoDS_Shape;
 
 namespace geomesh {
 
@@ -27,6 +31,13 @@ class OccFactory final : public GeometryFactory {
   // Its 8 points, 12 curves and 6 surfaces get the next free tags of their dimensions.
   int addBox(int tag, Vec3 corner, Vec3 extent) override;
 
+  // Merge "part.step"; ShapeFromFile("part.brep"): the shapes of a BREP, STEP or IGES file
+  // (by extension: .brep/.brp, .step/.stp, .iges/.igs), each solid, face, edge and vertex
+  // under the next free tag of its dimension. Returns the top-level entities: the solids, then
+  // the faces, edges and vertices that belong to none. Throws GeometryError naming the path
+  // when the file is missing or unreadable. (kernel/occ/occ_import.cpp)
+  std::vector<EntityId> importShapes(const std::string& path);
+
   double volume(int tag) const;  // of the volume `tag`; throws GeometryError if undefined
   int maxTag(int kind) const override;  // 0 when none, and for loops (none are kept)
   bool contains(EntityId e) const override;
@@ -50,6 +61,9 @@ class OccFactory final : public GeometryFactory {
   void clear() override;
 
  private:
+  // Tags the shape's solids and their sub-shapes, then its free faces, edges and vertices.
+  std::vector<EntityId> bindTopLevel(const TopoDS_Shape& shape);
+
   std::unique_ptr<OccShapes> shapes_;
 };
 

@@ -203,6 +203,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   em.nodes.clear();
   em.parametric.clear();
   em.blocks.clear();
+  if (g.isDegenerate()) return;  // its mesh is its one vertex
   const auto& transfinite = model.meshConstraints().transfiniteCurves;
   if (const auto it = transfinite.find(curve.tag); it != transfinite.end()) {
     placeTransfinite(curve, arc, transfiniteFractions(it->second), mesh);
@@ -242,6 +243,20 @@ std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int 
   chain.push_back(pointNode(mesh, curve->endPoint));
   if (signedTag < 0) std::reverse(chain.begin(), chain.end());
   return chain;
+}
+
+std::vector<double> curveNodeParameters(const Model& model, const Mesh& mesh, int signedTag) {
+  const int tag = std::abs(signedTag);
+  const ModelCurve* curve = model.curve(tag);
+  const EntityMesh* em = mesh.find({1, tag});
+  if (!curve || !em || !curve->geometry) throw MeshError({1, tag}, "curve has no mesh");
+  if (em->parametric.size() != em->nodes.size()) return {};
+  const Interval range = curve->geometry->range();
+  std::vector<double> ts{range.min};
+  ts.insert(ts.end(), em->parametric.begin(), em->parametric.end());
+  ts.push_back(range.max);
+  if (signedTag < 0) std::reverse(ts.begin(), ts.end());
+  return ts;
 }
 
 }  // namespace geomesh

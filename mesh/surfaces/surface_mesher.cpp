@@ -1,7 +1,9 @@
 #include "mesh/surfaces/surface_mesher.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <string>
 #include <unordered_map>
@@ -15,41 +17,119 @@
 namespace geomesh {
 namespace {
 
-// The nodes and constrained segments a surface's triangulation starts from, numbered locally.
+double distance(Vec2 a, Vec2 b) { return std::hypot(a.u - b.u, a.v - b.v); }
+
+// The points and constrained segments a surface's triangulation starts from, numbered
+// locally. A point is a mesh node at a place of the parameter plane: a node on a seam has a
+// point on each side, a pole one per piece of its segment.
 struct SurfaceInput {
-  std::vector<NodeIndex> nodes;
+  std::vector<NodeIndex> nodes;          // the node of each point
+  std::vector<std::optional<Vec2>> uv;   // its parameters, when the surface gave them
   std::vector<ConstrainedSegment> segments;
   std::vector<int> segmentCurve;  // tag of the curve each segment comes from
-  std::unordered_map<NodeIndex, std::uint32_t> localOf;
+  std::unordered_map<NodeIndex, std::vector<std::uint32_t>> pointsOf;
+  double tolerance = 0;  // parameter distance under which two places of a node are one
 
-  std::uint32_t local(NodeIndex n) {
-    const auto [it, inserted] = localOf.try_emplace(n, static_cast<std::uint32_t>(nodes.size()));
-    if (inserted) nodes.push_back(n);
-    return it->second;
+  // The point of node n at `place`: an existing one of n at the same place (or any one of n
+  // when either place is unknown), else a new one.
+  std::uint32_t local(NodeIndex n, std::optional<Vec2> place = std::nullopt) {
+    std::vector<std::uint32_t>& points = pointsOf[n];
+    for (std::uint32_t k : points)
+      if (!place || !uv[k] || distance(*place, *uv[k]) <= tolerance) return k;
+    const auto k = static_cast<std::uint32_t>(nodes.size());
+    nodes.push_back(n);
+    uv.push_back(place);
+    points.push_back(k);
+    return k;
   }
-  void addCurve(const Model& model, const Mesh& mesh, int signedTag, EdgeKind kind) {
-    const std::vector<NodeIndex> chain = curveNodeChain(model, mesh, signedTag);
+  void addChain(const std::vector<NodeIndex>& chain, const std::vector<std::optional<Vec2>>& at,
+                int curve, EdgeKind kind) {
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
-      segments.push_back({local(chain[k]), local(chain[k + 1]), kind});
-      segmentCurve.push_back(std::abs(signedTag));
+      segments.push_back({local(chain[k], at[k]), local(chain[k + 1], at[k + 1]), kind});
+      segmentCurve.push_back(curve);
     }
   }
 };
 
+// Where the surface puts the chain's nodes, when it knows the curve; unknown places otherwise.
+std::vector<std::optional<Vec2>> chainPlaces(const Model& model, const Mesh& mesh,
+                                             const SurfaceGeometry& g, int signedTag,
+                                             std::size_t count) {
+  std::vector<std::optional<Vec2>> at(count);
+  const std::vector<double> ts = curveNodeParameters(model, mesh, signedTag);
+  if (ts.size() != count || !g.curveParameters(signedTag, ts.front())) return at;
+  for (std::size_t k = 0; k < count; ++k) at[k] = g.curveParameters(signedTag, ts[k]);
+  return at;
+}
+
+bool isDegenerate(const Model& model, int signedTag) {
+  const ModelCurve* curve = model.curve(std::abs(signedTag));
+  return curve && curve->geometry && curve->geometry->isDegenerate();
+}
+
+double meanSegmentLength(const SurfaceInput& in, const Mesh& mesh) {
+  double total = 0;
+  int count = 0;
+  for (const ConstrainedSegment& s : in.segments) {
+    const double length = distance(mesh.node(in.nodes[s.a]), mesh.node(in.nodes[s.b]));
+    if (length > 0) total += length, ++count;
+  }
+  return count > 0 ? total / count : 0;
+}
+
+// A degenerate curve (a pole) is a segment of the parameter plane: it gets copies of its node
+// spaced about `size` apart, as measured by the surface's lengths at its parameter box centre
+// (lengths the pole itself does not have).
+void addPole(SurfaceInput& in, const SurfaceGeometry& g, NodeIndex pole, Vec2 a, Vec2 b,
+             int curve, double size) {
+  const ParamBox box = g.bounds();
+  const SurfaceDerivatives d =
+      g.firstDerivatives({0.5 * (box.u.min + box.u.max), 0.5 * (box.v.min + box.v.max)});
+  const double length = norm((b.u - a.u) * d.du + (b.v - a.v) * d.dv);
+  constexpr double kMaxCopies = 10000;
+  const int pieces = size > 0 ? static_cast<int>(std::clamp(std::ceil(length / size), 1.0,
+                                                            kMaxCopies))
+                              : 1;
+  std::vector<NodeIndex> chain(pieces + 1, pole);
+  std::vector<std::optional<Vec2>> at(pieces + 1);
+  for (int k = 0; k <= pieces; ++k) {
+    const double f = static_cast<double>(k) / pieces;
+    at[k] = Vec2{a.u + f * (b.u - a.u), a.v + f * (b.v - a.v)};
+  }
+  in.addChain(chain, at, curve, EdgeKind::Boundary);
+}
+
 SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
+  const SurfaceGeometry& g = *surface.geometry;
   SurfaceInput in;
+  const ParamBox box = g.bounds();
+  in.tolerance = 1e-6 * std::hypot(box.u.max - box.u.min, box.v.max - box.v.min);
+  if (!std::isfinite(in.tolerance)) in.tolerance = 0;
+  std::vector<std::pair<int, std::vector<std::optional<Vec2>>>> poles;
+  auto add = [&](int curve, EdgeKind kind) {
+    const std::vector<NodeIndex> chain = curveNodeChain(model, mesh, curve);
+    std::vector<std::optional<Vec2>> at = chainPlaces(model, mesh, g, curve, chain.size());
+    if (isDegenerate(model, curve) && at.front() && at.back())
+      poles.emplace_back(curve, std::move(at));
+    else
+      in.addChain(chain, at, std::abs(curve), kind);
+  };
   for (const std::vector<int>& loop : surface.loops)
-    for (int curve : loop) in.addCurve(model, mesh, curve, EdgeKind::Boundary);
-  for (int curve : surface.embeddedCurves) in.addCurve(model, mesh, curve, EdgeKind::Embedded);
+    for (int curve : loop) add(curve, EdgeKind::Boundary);
+  for (int curve : surface.embeddedCurves) add(curve, EdgeKind::Embedded);
+  const double size = meanSegmentLength(in, mesh);
+  for (const auto& [curve, at] : poles)
+    addPole(in, g, curveNodeChain(model, mesh, curve).front(), *at.front(), *at.back(),
+            std::abs(curve), size);
   for (int point : surface.embeddedPoints) in.local(pointNode(mesh, point));
   return in;
 }
 
-std::vector<Vec2> parameters(const SurfaceGeometry& g, const Mesh& mesh,
-                             const std::vector<NodeIndex>& nodes) {
+std::vector<Vec2> parameters(const SurfaceGeometry& g, const Mesh& mesh, const SurfaceInput& in) {
   std::vector<Vec2> uv;
-  uv.reserve(nodes.size());
-  for (NodeIndex n : nodes) uv.push_back(g.project(mesh.node(n)));
+  uv.reserve(in.nodes.size());
+  for (std::size_t k = 0; k < in.nodes.size(); ++k)
+    uv.push_back(in.uv[k] ? *in.uv[k] : g.project(mesh.node(in.nodes[k])));
   return uv;
 }
 
@@ -107,6 +187,7 @@ void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh
   std::vector<int> count(in.nodes.size(), 0);
   for (const ConstrainedSegment& s : in.segments) {
     const double length = distance(mesh.node(in.nodes[s.a]), mesh.node(in.nodes[s.b]));
+    if (!(length > 0)) continue;  // a piece of a pole
     total[s.a] += length, total[s.b] += length;
     ++count[s.a], ++count[s.b];
   }
@@ -139,8 +220,13 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
     em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
     mesh.setNodeSize(node, planar.sizes[v]);
   }
+  // A triangle with two corners at a pole has collapsed: it is left out.
   ElementBlock& triangles = em.block(ElementType::Triangle3);
-  for (std::uint32_t v : planar.triangles) triangles.nodes.push_back(globalOf[v]);
+  for (std::size_t t = 0; t + 2 < planar.triangles.size(); t += 3) {
+    const NodeIndex a = globalOf[planar.triangles[t]], b = globalOf[planar.triangles[t + 1]],
+                    c = globalOf[planar.triangles[t + 2]];
+    if (a != b && b != c && c != a) triangles.nodes.insert(triangles.nodes.end(), {a, b, c});
+  }
 }
 
 }  // namespace
@@ -153,7 +239,7 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
   const SurfaceGeometry& g = *surface.geometry;
   const SurfaceInput in = collectInput(model, surface, mesh);
-  const std::vector<Vec2> uv = parameters(g, mesh, in.nodes);
+  const std::vector<Vec2> uv = parameters(g, mesh, in);
   const WorkFrame frame(g, boxCenter(uv));
   std::vector<Vec2> work;
   work.reserve(uv.size());

@@ -1,0 +1,131 @@
+// Meshing imported OpenCASCADE parts whose faces have seams and poles: cylinder, sphere, cone,
+// torus and a box with a cylindrical hole, in 2D and 3D, measured against their exact area and
+// volume.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "kernel/occ/occ_factory.h"
+#include "mesh/checks/mesh_check.h"
+#include "mesh/pipeline/generate.h"
+#include "tests/occ_fixtures.h"
+
+namespace geomesh {
+namespace {
+
+using namespace occ_fixtures;
+
+class QuietSink final : public MessageSink {
+ public:
+  void info(std::string_view) override {}
+  void warning(std::string_view) override {}
+};
+
+Model importedModel(const std::string& path) {
+  OccFactory occ;
+  occ.importShapes(path);
+  Model model;
+  occ.synchronize(model);
+  return model;
+}
+
+double triangleArea(const Mesh& mesh) {
+  double area = 0;
+  for (const auto& [id, em] : mesh.entities()) {
+    if (id.dim != 2) continue;
+    if (const ElementBlock* t = em.findBlock(ElementType::Triangle3))
+      for (std::size_t e = 0; e < t->size(); ++e) {
+        const auto n = t->element(e);
+        const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
+        area += 0.5 * norm(cross(b - a, c - a));
+      }
+  }
+  return area;
+}
+
+double tetVolume(const Mesh& mesh) {
+  double volume = 0;
+  for (const auto& [id, em] : mesh.entities()) {
+    if (id.dim != 3) continue;
+    if (const ElementBlock* t = em.findBlock(ElementType::Tet4))
+      for (std::size_t e = 0; e < t->size(); ++e) {
+        const auto n = t->element(e);
+        const Vec3 a = mesh.node(n[0]);
+        volume += dot(mesh.node(n[1]) - a, cross(mesh.node(n[2]) - a, mesh.node(n[3]) - a)) / 6;
+      }
+  }
+  return volume;
+}
+
+struct Measured {
+  std::size_t nodes2D, triangles, nodes3D, tets;
+};
+
+// Meshes the part at size h in 2D, then 3D; checks validity and measures on the way.
+Measured meshPart(const Part& part, const std::string& path, double h, double tolerance) {
+  const Model model = importedModel(path);
+  MeshOptions options;
+  options.sizeMax = h;
+  QuietSink log;
+  Mesh mesh;
+  generateMesh(model, options, 2, mesh, log);
+  MeshCheckReport report = checkMesh(model, mesh);
+  EXPECT_TRUE(report.ok()) << part.name << " 2D:\n" << report.summary();
+  EXPECT_NEAR(triangleArea(mesh), part.area, tolerance * part.area) << part.name;
+  Measured m{mesh.nodeCount(), mesh.elementCount(2), 0, 0};
+  Mesh volume;
+  generateMesh(model, options, 3, volume, log);
+  report = checkMesh(model, volume);
+  EXPECT_TRUE(report.ok()) << part.name << " 3D:\n" << report.summary();
+  EXPECT_NEAR(tetVolume(volume), part.volume, tolerance * part.volume) << part.name;
+  m.nodes3D = volume.nodeCount();
+  m.tets = volume.elementCount(3);
+  return m;
+}
+
+// Triangles that keep to the size: as many as an equilateral tiling of the area needs, within
+// a factor of 2 either way.
+void expectSensibleCount(const Part& part, const Measured& m, double h) {
+  const double ideal = part.area / (std::sqrt(3.0) / 4 * h * h);
+  EXPECT_GT(static_cast<double>(m.triangles), 0.5 * ideal) << part.name;
+  EXPECT_LT(static_cast<double>(m.triangles), 2.0 * ideal) << part.name;
+}
+
+TEST(OccSurfaceMesh, CylinderSeam) {
+  const Part part = cylinder();
+  const Measured m = meshPart(part, writeBrep(part), 0.1, 0.01);
+  expectSensibleCount(part, m, 0.1);
+}
+
+TEST(OccSurfaceMesh, SpherePoles) {
+  const Part part = sphere();
+  const Measured m = meshPart(part, writeBrep(part), 0.1, 0.01);
+  expectSensibleCount(part, m, 0.1);
+}
+
+TEST(OccSurfaceMesh, ConeApex) {
+  const Part part = cone();
+  const Measured m = meshPart(part, writeBrep(part), 0.1, 0.01);
+  expectSensibleCount(part, m, 0.1);
+}
+
+TEST(OccSurfaceMesh, TorusTwoSeams) {
+  const Part part = torus();
+  const Measured m = meshPart(part, writeBrep(part), 0.1, 0.01);
+  expectSensibleCount(part, m, 0.1);
+}
+
+TEST(OccSurfaceMesh, BoxWithCylindricalHoleFromStep) {
+  const Part part = boxWithHole();
+  const Measured m = meshPart(part, writeStep(part), 0.1, 0.01);
+  expectSensibleCount(part, m, 0.1);
+}
+
+TEST(OccSurfaceMesh, CoarseSphereStaysValid) {
+  const Part part = sphere();
+  meshPart(part, writeBrep(part), 0.5, 0.2);
+}
+
+}  // namespace
+}  // namespace geomesh
