@@ -3,6 +3,9 @@
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS_Shape.hxx>
@@ -11,6 +14,8 @@
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_factory.h"
@@ -25,9 +30,31 @@ std::string lowercaseExtension(const std::string& path) {
   return ext;
 }
 
+// OpenCASCADE's readers report their progress on standard output, where geomesh writes what
+// scripts print: while one reads, its printers pass failures only.
+class QuietReading {
+ public:
+  QuietReading() {
+    const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
+    for (Message_SequenceOfPrinters::Iterator it(printers); it.More(); it.Next()) {
+      saved_.emplace_back(it.Value(), it.Value()->GetTraceLevel());
+      it.Value()->SetTraceLevel(Message_Fail);
+    }
+  }
+  ~QuietReading() {
+    for (auto& [printer, level] : saved_) printer->SetTraceLevel(level);
+  }
+  QuietReading(const QuietReading&) = delete;
+  QuietReading& operator=(const QuietReading&) = delete;
+
+ private:
+  std::vector<std::pair<Handle(Message_Printer), Message_Gravity>> saved_;
+};
+
 // STEP and IGES readers share their interface: read, transfer every root, one shape.
 template <typename Reader>
 TopoDS_Shape readExchangeFile(const std::string& path, const char* format) {
+  const QuietReading quiet;
   Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
     throw GeometryError("cannot read '" + path + "' as a " + format + " file");

@@ -28,6 +28,8 @@ struct SurfaceInput {
   std::vector<ConstrainedSegment> segments;
   std::vector<int> segmentCurve;  // tag of the curve each segment comes from
   std::unordered_map<NodeIndex, std::vector<std::uint32_t>> pointsOf;
+  std::vector<Vec2> seeds;  // free points around poles (parameters), numbered after the points
+  double seedSize = 0;      // their target size
   double tolerance = 0;  // parameter distance under which two places of a node are one
 
   // The point of node n at `place`: an existing one of n at the same place (or any one of n
@@ -77,9 +79,38 @@ double meanSegmentLength(const SurfaceInput& in, const Mesh& mesh) {
   return count > 0 ? total / count : 0;
 }
 
-// A degenerate curve (a pole) is a segment of the parameter plane: it gets copies of its node
-// spaced about `size` apart, as measured by the surface's lengths at its parameter box centre
-// (lengths the pole itself does not have).
+// A ring of free points `size` away from a pole's segment, at least six per turn, so that
+// the triangles around the pole each span a small part of the turn: without them a coarse
+// mesh may close the turn with two triangles, flat in space (at a cone's apex).
+void addPoleRing(SurfaceInput& in, const SurfaceGeometry& g, Vec2 a, Vec2 b, double size) {
+  const Vec2 along{b.u - a.u, b.v - a.v};
+  const double length = std::hypot(along.u, along.v);
+  if (!(length > 0) || !(size > 0)) return;
+  const Vec2 inward{-along.v / length, along.u / length};  // the domain lies left of its loops
+  const SurfaceDerivatives d = g.firstDerivatives({0.5 * (a.u + b.u), 0.5 * (a.v + b.v)});
+  const double speed = norm(inward.u * d.du + inward.v * d.dv);
+  const ParamBox box = g.bounds();
+  const double extent = std::abs(inward.u) * (box.u.max - box.u.min) +
+                        std::abs(inward.v) * (box.v.max - box.v.min);
+  if (!(speed > 0) || !std::isfinite(extent)) return;
+  const double offset = std::min(size / speed, 0.25 * extent);
+  auto ringPoint = [&](double f) {
+    return Vec2{a.u + f * along.u + offset * inward.u, a.v + f * along.v + offset * inward.v};
+  };
+  constexpr int kSamples = 64;
+  double ring = 0;
+  for (int k = 0; k < kSamples; ++k)
+    ring += distance(g.point(ringPoint(double(k) / kSamples)),
+                     g.point(ringPoint(double(k + 1) / kSamples)));
+  constexpr double kMinimum = 6, kMaximum = 10000;
+  const int count = static_cast<int>(std::clamp(std::ceil(ring / size), kMinimum, kMaximum));
+  for (int k = 0; k < count; ++k) in.seeds.push_back(ringPoint((k + 0.5) / count));
+  in.seedSize = size;
+}
+
+// A degenerate curve (a pole) is a segment of the parameter plane: it gets copies of its node,
+// fewer than its length at the parameter box centre would need at `size` (a quarter: more only
+// make thinner triangles at the pole), and a ring of free points around it.
 void addPole(SurfaceInput& in, const SurfaceGeometry& g, NodeIndex pole, Vec2 a, Vec2 b,
              int curve, double size) {
   const ParamBox box = g.bounds();
@@ -87,9 +118,8 @@ void addPole(SurfaceInput& in, const SurfaceGeometry& g, NodeIndex pole, Vec2 a,
       g.firstDerivatives({0.5 * (box.u.min + box.u.max), 0.5 * (box.v.min + box.v.max)});
   const double length = norm((b.u - a.u) * d.du + (b.v - a.v) * d.dv);
   constexpr double kMaxCopies = 10000;
-  const int pieces = size > 0 ? static_cast<int>(std::clamp(std::ceil(length / size), 1.0,
-                                                            kMaxCopies))
-                              : 1;
+  const int pieces =
+      size > 0 ? static_cast<int>(std::clamp(std::ceil(length / size / 4), 1.0, kMaxCopies)) : 1;
   std::vector<NodeIndex> chain(pieces + 1, pole);
   std::vector<std::optional<Vec2>> at(pieces + 1);
   for (int k = 0; k <= pieces; ++k) {
@@ -97,6 +127,7 @@ void addPole(SurfaceInput& in, const SurfaceGeometry& g, NodeIndex pole, Vec2 a,
     at[k] = Vec2{a.u + f * (b.u - a.u), a.v + f * (b.v - a.v)};
   }
   in.addChain(chain, at, curve, EdgeKind::Boundary);
+  addPoleRing(in, g, a, b, size);
 }
 
 SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
@@ -201,6 +232,10 @@ void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh
   }
 }
 
+std::uint32_t firstSeed(const SurfaceInput& in) {
+  return Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
+}
+
 // Copies the triangles and their new vertices into the surface's EntityMesh.
 void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame& frame,
                const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh) {
@@ -242,8 +277,9 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   const std::vector<Vec2> uv = parameters(g, mesh, in);
   const WorkFrame frame(g, boxCenter(uv));
   std::vector<Vec2> work;
-  work.reserve(uv.size());
+  work.reserve(uv.size() + in.seeds.size());
   for (Vec2 p : uv) work.push_back(frame.toWork(p));
+  for (Vec2 p : in.seeds) work.push_back(frame.toWork(p));
 
   Triangulation2D tri = triangulateBoundary(in, work, id, mesh);
   std::vector<std::uint8_t> inside = classifyInside(tri);
@@ -256,8 +292,12 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   };
   const bool withField = fields && fields->hasBackground();
   setBoundarySizes(in, rules, mesh, tri);
+  for (std::size_t k = 0; k < in.seeds.size(); ++k)
+    tri.setSize(firstSeed(in) + static_cast<std::uint32_t>(k), in.seedSize);
+  // The rings around poles stay where they are put: smoothing in the surface's metric, which
+  // vanishes along a pole, would slide them round the turn.
   const std::uint32_t firstMovable =
-      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
+      firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
   SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
                            g.isPlane() ? nullptr : &metric, withField ? &field : nullptr};
   const PlanarMesh planar = algorithm.mesh(interior);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "io/msh_reader.h"
@@ -299,6 +300,61 @@ TEST_F(ModelCommands, IncludeAndListFromFileReadOnlyRegularFiles) {
             std::string::npos);
   EXPECT_NE(firstLineOf("x() = ListFromFile(\"/dev/zero\");").find("cannot open '/dev/zero'"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace geomesh::testing
+
+namespace geomesh::testing {
+namespace {
+
+// CAD files: Merge and ShapeFromFile add their shapes to the OpenCASCADE factory.
+class CadImport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratch::path(
+        "cad-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy_file(fs::path(GEOMESH_SOURCE_DIR) / "tutorials" / "part.step", dir_ / "part.step");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string runMain(ScriptRun& run, const std::string& text) {
+    return run.run(text, (dir_ / "main.geo").string());
+  }
+  fs::path dir_;
+};
+
+TEST_F(CadImport, MergeStepAddsItsEntitiesWhicheverFactoryIsSelected) {
+  ScriptRun run;
+  runMain(run, "Merge \"part.step\";\nMesh.MeshSizeMax = 0.1;\nMesh 2;\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  const Model& model = run.session.model();
+  EXPECT_EQ(model.volumes().size(), 1u);
+  EXPECT_EQ(model.surfaces().size(), 7u);
+  EXPECT_NEAR(triangleArea(run.session.mesh()), 2 * (4 - 0.16 * std::numbers::pi) + 4 + 0.4 * std::numbers::pi, 0.02);
+}
+
+TEST_F(CadImport, ShapeFromFileGivesTheTopLevelTags) {
+  ScriptRun run;
+  EXPECT_EQ(runMain(run, R"(
+SetFactory("OpenCASCADE");
+Box(1) = {5, 5, 5, 1, 1, 1};
+v() = ShapeFromFile("part.step");
+Printf("%g: %g", #v(), v(0));
+)"),
+            "1: 2\n");
+}
+
+TEST_F(CadImport, MissingFileFailsAtTheStatementNamingThePath) {
+  ScriptRun run;
+  try {
+    runMain(run, "x = 1;\nMerge \"absent.stp\";\n");
+    FAIL() << "no error";
+  } catch (const ScriptError& error) {
+    EXPECT_EQ(error.location().line, 2);
+    EXPECT_NE(error.message().find("absent.stp"), std::string::npos) << error.message();
+  }
 }
 
 }  // namespace

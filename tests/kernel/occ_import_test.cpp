@@ -64,7 +64,9 @@ TEST(OccImport, IgesFacesComeInWithoutSolid) {
   writer.ComputeModel();
   ASSERT_TRUE(writer.Write(path.c_str()));
   std::vector<EntityId> top;
+  ::testing::internal::CaptureStdout();  // the reader's progress stays off standard output
   const Counts c = importAndCount(path, &top);
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "");
   EXPECT_EQ(c.surfaces, 6u);
   EXPECT_EQ(c.points, 8u);
   ASSERT_FALSE(top.empty());

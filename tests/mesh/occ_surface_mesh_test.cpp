@@ -63,10 +63,12 @@ struct Measured {
 };
 
 // Meshes the part at size h in 2D, then 3D; checks validity and measures on the way.
-Measured meshPart(const Part& part, const std::string& path, double h, double tolerance) {
+Measured meshPart(const Part& part, const std::string& path, double h, double tolerance,
+                  int algorithm = 6) {
   const Model model = importedModel(path);
   MeshOptions options;
   options.sizeMax = h;
+  options.algorithm2D = algorithm;
   QuietSink log;
   Mesh mesh;
   generateMesh(model, options, 2, mesh, log);
@@ -125,6 +127,37 @@ TEST(OccSurfaceMesh, BoxWithCylindricalHoleFromStep) {
 TEST(OccSurfaceMesh, CoarseSphereStaysValid) {
   const Part part = sphere();
   meshPart(part, writeBrep(part), 0.5, 0.2);
+}
+
+// Coarse, a cone's apex would be closed by two triangles spanning half a turn each, flat in
+// space; the ring of points around the pole prevents it, with every algorithm.
+TEST(OccSurfaceMesh, CoarseConeApexWithEveryAlgorithm) {
+  const Part part = cone();
+  const std::string path = writeBrep(part);
+  for (int algorithm : {6, 5, 1, 2, 8}) {
+    SCOPED_TRACE("Mesh.Algorithm " + std::to_string(algorithm));
+    meshPart(part, path, 0.3, 0.05, algorithm);
+  }
+}
+
+// Each triangle of a pole's fan has its own corners: none with two at the pole.
+TEST(OccSurfaceMesh, PoleFanHasNoCollapsedTriangle) {
+  const Model model = importedModel(writeBrep(sphere()));
+  MeshOptions options;
+  options.sizeMax = 0.2;
+  QuietSink log;
+  Mesh mesh;
+  generateMesh(model, options, 2, mesh, log);
+  const ElementBlock* t = mesh.find({2, 1})->findBlock(ElementType::Triangle3);
+  ASSERT_NE(t, nullptr);
+  int atPoles = 0;
+  const NodeIndex poles[2] = {mesh.find({0, 1})->nodes[0], mesh.find({0, 2})->nodes[0]};
+  for (std::size_t e = 0; e < t->size(); ++e) {
+    const auto n = t->element(e);
+    EXPECT_TRUE(n[0] != n[1] && n[1] != n[2] && n[2] != n[0]);
+    for (NodeIndex p : poles) atPoles += (n[0] == p) + (n[1] == p) + (n[2] == p);
+  }
+  EXPECT_GE(atPoles, 12);  // at least six triangles around each pole
 }
 
 }  // namespace
