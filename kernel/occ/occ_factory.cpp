@@ -1,15 +1,15 @@
 #include "kernel/occ/occ_factory.h"
 
+#include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
-#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
-#include <TopTools_DataMapOfShapeInteger.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
 
@@ -20,29 +20,9 @@
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_geometry.h"
+#include "kernel/occ/occ_shapes.h"
 
 namespace geomesh {
-
-// Every shape the factory knows, by dimension: tag -> shape, and shape -> tag (the latter
-// compares shapes regardless of orientation).
-struct OccShapes {
-  std::map<int, TopoDS_Shape> byTag[4];
-  TopTools_DataMapOfShapeInteger tags[4];
-
-  int tagOf(int dim, const TopoDS_Shape& s) const { return tags[dim].Find(s); }
-  int maxTag(int dim) const { return byTag[dim].empty() ? 0 : byTag[dim].rbegin()->first; }
-  void bind(int dim, int tag, const TopoDS_Shape& s) {
-    byTag[dim][tag] = s;
-    tags[dim].Bind(s, tag);
-  }
-  // Tags the sub-shapes of `s` not yet known, in OpenCASCADE's exploration order.
-  void bindNewSubShapes(const TopoDS_Shape& s) {
-    static constexpr TopAbs_ShapeEnum kTypes[3] = {TopAbs_VERTEX, TopAbs_EDGE, TopAbs_FACE};
-    for (int dim = 0; dim < 3; ++dim)
-      for (TopExp_Explorer it(s, kTypes[dim]); it.More(); it.Next())
-        if (!tags[dim].IsBound(it.Current())) bind(dim, maxTag(dim) + 1, it.Current());
-  }
-};
 
 namespace {
 
@@ -73,40 +53,70 @@ OccFactory::OccFactory(OccFactory&&) noexcept = default;
 OccFactory& OccFactory::operator=(OccFactory&&) noexcept = default;
 
 int OccFactory::addBox(int tag, Vec3 corner, Vec3 extent) {
-  if (tag < 0) tag = shapes_->maxTag(3) + 1;
-  if (shapes_->byTag[3].contains(tag))
-    throw GeometryError("Volume " + std::to_string(tag) + " already exists");
+  tag = primitiveTag(3, tag, "Box");
   normalizeBox(corner, extent, tag);
-  try {
+  const TopoDS_Shape solid = guarded("Box " + std::to_string(tag), [&] {
     BRepPrimAPI_MakeBox maker(gp_Pnt(corner.x, corner.y, corner.z), extent.x, extent.y,
                               extent.z);
-    const TopoDS_Shape solid = maker.Solid();
-    shapes_->bind(3, tag, solid);
-    shapes_->bindNewSubShapes(solid);
-  } catch (const Standard_Failure& e) {
-    throw GeometryError("Box " + std::to_string(tag) + ": " + e.GetMessageString());
-  }
+    return maker.Solid();
+  });
+  shapes_->bindTree(3, tag, solid);
   return tag;
 }
 
-double OccFactory::volume(int tag) const {
-  auto it = shapes_->byTag[3].find(tag);
-  if (it == shapes_->byTag[3].end())
-    throw GeometryError("Volume " + std::to_string(tag) + " is not defined");
+namespace {
+
+double mass(const TopoDS_Shape& s, int dim) {
   GProp_GProps properties;
-  BRepGProp::VolumeProperties(it->second, properties);
+  if (dim == 3) BRepGProp::VolumeProperties(s, properties);
+  if (dim == 2) BRepGProp::SurfaceProperties(s, properties);
+  if (dim == 1) BRepGProp::LinearProperties(s, properties);
   return properties.Mass();
 }
 
-int OccFactory::maxTag(int dim) const {
-  return dim >= 0 && dim <= 3 ? shapes_->maxTag(dim) : 0;
+}  // namespace
+
+double OccFactory::volume(int tag) const { return mass(shapes_->find(3, tag), 3); }
+double OccFactory::area(int tag) const { return mass(shapes_->find(2, tag), 2); }
+double OccFactory::length(int tag) const { return mass(shapes_->find(1, tag), 1); }
+
+int OccFactory::maxTag(int kind) const {
+  if (kind >= 0 && kind <= 3) return shapes_->maxTag(kind);
+  if (kind == kCurveLoop) return shapes_->wires.empty() ? 0 : shapes_->wires.rbegin()->first;
+  if (kind == kSurfaceLoop) return shapes_->shells.empty() ? 0 : shapes_->shells.rbegin()->first;
+  return 0;
 }
 
-void OccFactory::clear() { shapes_ = std::make_unique<OccShapes>(); }
+bool OccFactory::contains(EntityId e) const { return shapes_->contains(e.dim, e.tag); }
+
+std::vector<int> OccFactory::tags(int dim) const {
+  std::vector<int> tags;
+  if (dim >= 0 && dim <= 3)
+    for (const auto& entry : shapes_->byTag[dim]) tags.push_back(entry.first);
+  return tags;
+}
+
+Vec3 OccFactory::pointCoordinates(int tag) const {
+  const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shapes_->find(0, tag)));
+  return {p.X(), p.Y(), p.Z()};
+}
+
+void OccFactory::clear() {
+  shapes_ = std::make_unique<OccShapes>();
+  meshSizes_.clear();
+}
+
+// A primitive's tag: the one given, or the next free one; taken tags are refused.
+int OccFactory::primitiveTag(int dim, int tag, const char* what) const {
+  if (tag < 0) return shapes_->maxTag(dim) + 1;
+  if (shapes_->contains(dim, tag))
+    throw GeometryError(std::string(what) + ": " + entityName(dim, tag) + " already exists");
+  return tag;
+}
 
 namespace {
 
-void exportPoints(const OccShapes& s, Model& model);
+void exportPoints(const OccShapes& s, const std::map<int, double>& sizes, Model& model);
 void exportCurves(const OccShapes& s, Model& model);
 void exportSurfaces(const OccShapes& s, Model& model);
 void exportVolumes(const OccShapes& s, Model& model);
@@ -114,7 +124,7 @@ void exportVolumes(const OccShapes& s, Model& model);
 }  // namespace
 
 void OccFactory::synchronize(Model& model) const {
-  exportPoints(*shapes_, model);
+  exportPoints(*shapes_, meshSizes_, model);
   exportCurves(*shapes_, model);
   exportSurfaces(*shapes_, model);
   exportVolumes(*shapes_, model);
@@ -122,10 +132,11 @@ void OccFactory::synchronize(Model& model) const {
 
 namespace {
 
-void exportPoints(const OccShapes& s, Model& model) {
+void exportPoints(const OccShapes& s, const std::map<int, double>& sizes, Model& model) {
   for (const auto& [tag, shape] : s.byTag[0]) {
     const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shape));
-    model.addPoint(ModelPoint{tag, {p.X(), p.Y(), p.Z()}, 0});
+    auto size = sizes.find(tag);
+    model.addPoint(ModelPoint{tag, {p.X(), p.Y(), p.Z()}, size == sizes.end() ? 0 : size->second});
   }
 }
 

@@ -1,16 +1,22 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
+#include "kernel/affine_map.h"
 #include "kernel/model.h"
 
 namespace geomesh {
 
-struct OccShapes;  // the shapes and their tags (kernel/occ/occ_factory.cpp)
+struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 
 // The OpenCASCADE geometry kernel (SetFactory("OpenCASCADE") in scripts). Shapes are built
 // one call at a time; synchronize() exports them, with every vertex, edge, face and solid, to
 // the Model with OpenCASCADE-backed geometry. OpenCASCADE itself stays behind this interface.
+// Tags follow Gmsh's OpenCASCADE kernel: a shape's sub-shapes not known yet get the next free
+// tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
+// GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
 class OccFactory {
  public:
   OccFactory();
@@ -18,13 +24,75 @@ class OccFactory {
   OccFactory(OccFactory&&) noexcept;
   OccFactory& operator=(OccFactory&&) noexcept;
 
+  // Elementary entities (kernel/occ/occ_curves.cpp, occ_surfaces.cpp), as the built-in
+  // factory takes them. Curves join the vertices of their points; loops are wires.
+  void addPoint(int tag, Vec3 xyz, double meshSize);
+  void addLine(int tag, int startPoint, int endPoint);
+  void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint);
+  void addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint, int endPoint);
+  void addSpline(int tag, const std::vector<int>& points);   // interpolating
+  void addBSpline(int tag, const std::vector<int>& points);  // cubic, clamped
+  void addBezier(int tag, const std::vector<int>& points);
+  void addCurveLoop(int tag, std::vector<int> curves);
+  void addPlaneSurface(int tag, std::vector<int> curveLoops);  // first loop outer, others holes
+  void addFillingSurface(int tag, std::vector<int> curveLoops);
+  void addSurfaceLoop(int tag, std::vector<int> surfaces);
+  void addVolume(int tag, std::vector<int> surfaceLoops);
+
+  // Primitives (kernel/occ/occ_primitives.cpp). Each returns its tag.
   // An axis-aligned box with a corner at `corner` and the opposite corner at corner + extent
-  // (extents may be negative, not zero). tag < 0: the next free volume tag. Returns the tag.
-  // Its 8 points, 12 curves and 6 surfaces get the next free tags of their dimensions.
+  // (extents may be negative, not zero). Its 8 points, 12 curves and 6 surfaces get the next
+  // free tags of their dimensions.
   int addBox(int tag, Vec3 corner, Vec3 extent);
+  // Sphere{xc, yc, zc, r, polar angle min, polar angle max, azimuthal opening}.
+  int addSphere(int tag, Vec3 center, double radius, double angle1 = -1.5707963267948966,
+                double angle2 = 1.5707963267948966, double angle3 = 6.283185307179586);
+  // Cylinder{x, y, z, dx, dy, dz, r, angle}: base centre, axis (its length is the height).
+  int addCylinder(int tag, Vec3 base, Vec3 axis, double radius,
+                  double angle = 6.283185307179586);
+  // Cone{x, y, z, dx, dy, dz, r1, r2, angle}: r1 at the base, r2 at the top (either may be 0).
+  int addCone(int tag, Vec3 base, Vec3 axis, double radius1, double radius2,
+              double angle = 6.283185307179586);
+  // Torus{x, y, z, r1, r2, angle}: around the z axis.
+  int addTorus(int tag, Vec3 center, double radius1, double radius2,
+               double angle = 6.283185307179586);
+  // Wedge{x, y, z, dx, dy, dz, ltx}: a right-angled wedge, its top `ltx` long along x.
+  int addWedge(int tag, Vec3 corner, Vec3 extent, double topX = 0);
+  // Rectangle{x, y, z, dx, dy, r}: in the plane z, corners rounded with radius r.
+  int addRectangle(int tag, Vec3 corner, double dx, double dy, double roundedRadius = 0);
+  // Disk{xc, yc, zc, rx, ry}: an elliptic disk in the plane z (rx >= ry).
+  int addDisk(int tag, Vec3 center, double rx, double ry);
+
+  // Booleans (kernel/occ/occ_booleans.cpp) on (dim, tag) shapes of any dimension. The result
+  // lists the entities of the result, in OpenCASCADE's order; tags follow Gmsh: an input left
+  // untouched keeps its tags; a deleted input turned into one shape gives it its tag; the
+  // other shapes of the result get new tags. Deleted inputs go, with their sub-shapes that
+  // nothing else uses.
+  enum class BooleanOperation { Union, Intersection, Difference, Fragments };
+  std::vector<EntityId> boolean(BooleanOperation operation, const std::vector<EntityId>& objects,
+                                const std::vector<EntityId>& tools, bool deleteObjects,
+                                bool deleteTools);
+  // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
+  void setBooleanTolerance(double tolerance) { booleanTolerance_ = tolerance; }
+
+  // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
+  void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
+  std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
+  void remove(const std::vector<EntityId>& shapes, bool recursive);
+  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes, bool combined) const;
+  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const;
+  BoundingBox boundingBox(EntityId shape) const;  // as Gmsh's, enlarged by 1e-7 each side
+  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const;
+  bool contains(EntityId e) const;
+  std::vector<int> tags(int dim) const;  // ascending
+  Vec3 pointCoordinates(int tag) const;
 
   double volume(int tag) const;  // of the volume `tag`; throws GeometryError if undefined
-  int maxTag(int dim) const;     // 0 when none
+  double area(int tag) const;    // of the surface `tag`
+  double length(int tag) const;  // of the curve `tag`
+  // The largest tag bound; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
+  int maxTag(int kind) const;
+  enum : int { kCurveLoop = 4, kSurfaceLoop = 5 };
 
   // Adds (or replaces) this factory's entities in the model; other entities are kept.
   void synchronize(Model& model) const;
@@ -32,6 +100,10 @@ class OccFactory {
 
  private:
   std::unique_ptr<OccShapes> shapes_;
+  std::map<int, double> meshSizes_;  // at points
+  double booleanTolerance_ = 0;
+
+  int primitiveTag(int dim, int tag, const char* what) const;
 };
 
 }  // namespace geomesh

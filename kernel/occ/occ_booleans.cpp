@@ -1,0 +1,147 @@
+// The OpenCASCADE factory's Booleans (union, intersection, difference, fragments) and the tags
+// of their results.
+#include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <Message_Report.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "kernel/geometry_error.h"
+#include "kernel/occ/occ_factory.h"
+#include "kernel/occ/occ_shapes.h"
+
+namespace geomesh {
+
+namespace {
+
+constexpr TopAbs_ShapeEnum kTypes[4] = {TopAbs_VERTEX, TopAbs_EDGE, TopAbs_FACE, TopAbs_SOLID};
+
+const char* operationName(OccFactory::BooleanOperation op) {
+  switch (op) {
+    case OccFactory::BooleanOperation::Union: return "BooleanUnion";
+    case OccFactory::BooleanOperation::Intersection: return "BooleanIntersection";
+    case OccFactory::BooleanOperation::Difference: return "BooleanDifference";
+    case OccFactory::BooleanOperation::Fragments: return "BooleanFragments";
+  }
+  return "Boolean";
+}
+
+// One input of a Boolean and what became of it.
+struct BooleanInput {
+  EntityId id;
+  TopoDS_Shape shape;
+  bool remove = false;  // Delete; given with its list
+  bool deleted = false;
+  TopTools_ListOfShape modified = {};
+  bool unchanged() const { return !deleted && modified.IsEmpty(); }
+};
+
+// OpenCASCADE's own account of a failed operation, in one line.
+std::string failureReason(const BRepAlgoAPI_BuilderAlgo& maker) {
+  std::ostringstream report;
+  if (!maker.GetReport().IsNull()) maker.GetReport()->Dump(report);
+  std::string text = report.str();
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? "OpenCASCADE could not compute it" : text;
+}
+
+std::unique_ptr<BRepAlgoAPI_BuilderAlgo> makeOperation(OccFactory::BooleanOperation op) {
+  switch (op) {
+    case OccFactory::BooleanOperation::Union: return std::make_unique<BRepAlgoAPI_Fuse>();
+    case OccFactory::BooleanOperation::Intersection: return std::make_unique<BRepAlgoAPI_Common>();
+    case OccFactory::BooleanOperation::Difference: return std::make_unique<BRepAlgoAPI_Cut>();
+    case OccFactory::BooleanOperation::Fragments: break;
+  }
+  return std::make_unique<BRepAlgoAPI_BuilderAlgo>();
+}
+
+TopTools_ListOfShape shapeList(const std::vector<BooleanInput>& inputs, bool objects,
+                               std::size_t objectCount) {
+  TopTools_ListOfShape list;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    if ((i < objectCount) == objects) list.Append(inputs[i].shape);
+  return list;
+}
+
+// Runs the operation; fragments take every input as an argument.
+TopoDS_Shape runOperation(BRepAlgoAPI_BuilderAlgo& maker, OccFactory::BooleanOperation op,
+                          const std::vector<BooleanInput>& inputs, std::size_t objectCount,
+                          double fuzzy) {
+  maker.SetRunParallel(false);
+  if (fuzzy > 0) maker.SetFuzzyValue(fuzzy);
+  if (op == OccFactory::BooleanOperation::Fragments) {
+    TopTools_ListOfShape all;
+    for (const BooleanInput& in : inputs) all.Append(in.shape);
+    maker.SetArguments(all);
+  } else {
+    auto& boolean = static_cast<BRepAlgoAPI_BooleanOperation&>(maker);
+    boolean.SetArguments(shapeList(inputs, true, objectCount));
+    boolean.SetTools(shapeList(inputs, false, objectCount));
+  }
+  maker.Build();
+  if (maker.HasErrors() || !maker.IsDone())
+    throw GeometryError(std::string(operationName(op)) + " failed: " + failureReason(maker));
+  return maker.Shape();
+}
+
+}  // namespace
+
+std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
+                                          const std::vector<EntityId>& objects,
+                                          const std::vector<EntityId>& tools, bool deleteObjects,
+                                          bool deleteTools) {
+  const std::string name = operationName(op);
+  if (objects.empty()) throw GeometryError(name + ": no object to operate on");
+  if (tools.empty() && op != BooleanOperation::Fragments)
+    throw GeometryError(name + ": no tool to operate with");
+  std::vector<BooleanInput> inputs;
+  for (const EntityId& e : objects)
+    inputs.push_back({{e.dim, std::abs(e.tag)}, shapes_->find(e.dim, std::abs(e.tag)), deleteObjects, false, {}});
+  for (const EntityId& e : tools)
+    inputs.push_back({{e.dim, std::abs(e.tag)}, shapes_->find(e.dim, std::abs(e.tag)), deleteTools, false, {}});
+
+  std::unique_ptr<BRepAlgoAPI_BuilderAlgo> maker = makeOperation(op);
+  const TopoDS_Shape result = guarded(name, [&] {
+    TopoDS_Shape shape = runOperation(*maker, op, inputs, objects.size(), booleanTolerance_);
+    for (BooleanInput& in : inputs) {
+      in.deleted = maker->IsDeleted(in.shape);
+      in.modified = maker->Modified(in.shape);
+    }
+    return shape;
+  });
+
+  // Deleted inputs go, unless the result holds them untouched.
+  for (const BooleanInput& in : inputs)
+    if (in.remove && !in.unchanged()) shapes_->unbind(in.id.dim, in.id.tag, true);
+  // A deleted input turned into a single shape of its dimension passes its tag on.
+  for (const BooleanInput& in : inputs) {
+    if (!in.remove || in.deleted || in.modified.Extent() != 1) continue;
+    const TopoDS_Shape& image = in.modified.First();
+    if (shapeDimension(image) == in.id.dim && !shapes_->isBound(in.id.dim, image) &&
+        !shapes_->contains(in.id.dim, in.id.tag))
+      shapes_->bindTree(in.id.dim, in.id.tag, image);
+  }
+  // The rest of the result gets new tags, highest dimension first, in the result's order.
+  std::vector<EntityId> out;
+  std::set<EntityId> listed;
+  for (int dim = 3; dim >= 0; --dim) {
+    TopExp_Explorer it = dim == 3 ? TopExp_Explorer(result, kTypes[3])
+                                  : TopExp_Explorer(result, kTypes[dim], kTypes[dim + 1]);
+    for (; it.More(); it.Next()) {
+      const EntityId e{dim, shapes_->bindNew(dim, it.Current())};
+      if (listed.insert(e).second) out.push_back(e);
+    }
+  }
+  return out;
+}
+
+}  // namespace geomesh
