@@ -4,8 +4,12 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepTools_History.hxx>
 #include <Message_Report.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 
 #include <memory>
@@ -93,6 +97,57 @@ TopoDS_Shape runOperation(BRepAlgoAPI_BuilderAlgo& maker, OccFactory::BooleanOpe
   return maker.Shape();
 }
 
+// Geometry.OCCUnionUnify: a union's faces and edges that lie on the same surface or curve
+// merge. The inputs' histories go through the merge too.
+TopoDS_Shape unify(const TopoDS_Shape& shape, std::vector<BooleanInput>& inputs) {
+  ShapeUpgrade_UnifySameDomain unifier(shape, true, true, false);
+  unifier.Build();
+  const Handle(BRepTools_History) history = unifier.History();
+  for (BooleanInput& in : inputs) {
+    if (in.deleted) continue;
+    TopTools_ListOfShape before = in.modified;
+    if (before.IsEmpty()) before.Append(in.shape);
+    TopTools_ListOfShape after;
+    bool changed = !in.modified.IsEmpty();
+    for (const TopoDS_Shape& s : before) {
+      if (history->IsRemoved(s)) {
+        changed = true;
+        continue;
+      }
+      const TopTools_ListOfShape& images = history->Modified(s);
+      if (images.IsEmpty()) {
+        after.Append(s);
+      } else {
+        changed = true;
+        for (const TopoDS_Shape& image : images) after.Append(image);
+      }
+    }
+    in.deleted = after.IsEmpty();
+    in.modified = changed ? after : TopTools_ListOfShape();
+  }
+  return unifier.Shape();
+}
+
+// Binds the result's shapes, highest dimension first, in the result's order: those not bound
+// yet get new tags, depth first. Lists each shape that is not part of one listed before.
+std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) {
+  std::vector<EntityId> out;
+  std::set<EntityId> listed;
+  TopTools_IndexedMapOfShape inListed;  // sub-shapes of the shapes listed so far
+  for (int dim = 3; dim >= 0; --dim) {
+    TopExp_Explorer it = dim == 3 ? TopExp_Explorer(result, kTypes[3])
+                                  : TopExp_Explorer(result, kTypes[dim], kTypes[dim + 1]);
+    for (; it.More(); it.Next()) {
+      if (inListed.Contains(it.Current())) continue;
+      const EntityId e{dim, shapes.bindNew(dim, it.Current())};
+      if (!listed.insert(e).second) continue;
+      out.push_back(e);
+      for (int sub = dim - 1; sub >= 0; --sub) TopExp::MapShapes(it.Current(), kTypes[sub], inListed);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
@@ -116,32 +171,22 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
       in.deleted = maker->IsDeleted(in.shape);
       in.modified = maker->Modified(in.shape);
     }
-    return shape;
+    return op == BooleanOperation::Union ? unify(shape, inputs) : shape;
   });
 
   // Deleted inputs go, unless the result holds them untouched.
   for (const BooleanInput& in : inputs)
     if (in.remove && !in.unchanged()) shapes_->unbind(in.id.dim, in.id.tag, true);
-  // A deleted input turned into a single shape of its dimension passes its tag on.
+  // A deleted input turned into a single shape of its dimension passes its tag on (to that
+  // shape alone: its sub-shapes are numbered with the rest of the result).
   for (const BooleanInput& in : inputs) {
     if (!in.remove || in.deleted || in.modified.Extent() != 1) continue;
     const TopoDS_Shape& image = in.modified.First();
     if (shapeDimension(image) == in.id.dim && !shapes_->isBound(in.id.dim, image) &&
         !shapes_->contains(in.id.dim, in.id.tag))
-      shapes_->bindTree(in.id.dim, in.id.tag, image);
+      shapes_->bindShape(in.id.dim, in.id.tag, image);
   }
-  // The rest of the result gets new tags, highest dimension first, in the result's order.
-  std::vector<EntityId> out;
-  std::set<EntityId> listed;
-  for (int dim = 3; dim >= 0; --dim) {
-    TopExp_Explorer it = dim == 3 ? TopExp_Explorer(result, kTypes[3])
-                                  : TopExp_Explorer(result, kTypes[dim], kTypes[dim + 1]);
-    for (; it.More(); it.Next()) {
-      const EntityId e{dim, shapes_->bindNew(dim, it.Current())};
-      if (listed.insert(e).second) out.push_back(e);
-    }
-  }
-  return out;
+  return bindResult(*shapes_, result);
 }
 
 }  // namespace geomesh

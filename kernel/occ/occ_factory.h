@@ -38,6 +38,8 @@ class OccFactory {
   void addFillingSurface(int tag, std::vector<int> curveLoops);
   void addSurfaceLoop(int tag, std::vector<int> surfaces);
   void addVolume(int tag, std::vector<int> surfaceLoops);
+  // MeshSize{points} = size: the prescribed mesh size at the points.
+  void setMeshSize(const std::vector<int>& points, double size);
 
   // Primitives (kernel/occ/occ_primitives.cpp). Each returns its tag.
   // An axis-aligned box with a corner at `corner` and the opposite corner at corner + extent

@@ -74,8 +74,7 @@ void OccShapes::bindTree(int dim, int tag, const TopoDS_Shape& s) {
 }
 
 int OccShapes::bindNew(int dim, const TopoDS_Shape& s) {
-  if (isBound(dim, s)) return tagOf(dim, s);
-  const int tag = maxTag(dim) + 1;
+  const int tag = isBound(dim, s) ? tagOf(dim, s) : maxTag(dim) + 1;
   bindTree(dim, tag, s);
   return tag;
 }

@@ -38,8 +38,10 @@ struct OccShapes {
   // first (each face, with each of its edges, with each of their vertices), under the next
   // free tags of their dimensions. A shape already bound keeps its tag.
   void bindTree(int dim, int tag, const TopoDS_Shape& s);
-  // bindTree under the next free tag, unless `s` is bound already. Returns its tag.
+  // bindTree under the next free tag, or under its tag if `s` is bound already. Returns it.
   int bindNew(int dim, const TopoDS_Shape& s);
+  // Binds `s` alone under `tag`; its sub-shapes are left to a later bindTree.
+  void bindShape(int dim, int tag, const TopoDS_Shape& s) { bindOne(dim, tag, s); }
   // Forgets (dim, tag); recursive: also its sub-shapes that no other bound shape uses.
   void unbind(int dim, int tag, bool recursive);
 
