@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "kernel/geometry_error.h"
@@ -116,18 +117,26 @@ int OccFactory::primitiveTag(int dim, int tag, const char* what) const {
 
 namespace {
 
+using Extrusions = std::map<EntityId, ExtrusionRecord>;
 void exportPoints(const OccShapes& s, const std::map<int, double>& sizes, Model& model);
-void exportCurves(const OccShapes& s, Model& model);
-void exportSurfaces(const OccShapes& s, Model& model);
-void exportVolumes(const OccShapes& s, Model& model);
+void exportCurves(const OccShapes& s, const Extrusions& extrusions, Model& model);
+void exportSurfaces(const OccShapes& s, const Extrusions& extrusions, Model& model);
+void exportVolumes(const OccShapes& s, const Extrusions& extrusions, Model& model);
+
+// The record of an extruded entity, if it still exists as extruded.
+std::optional<ExtrusionRecord> extrusionOf(const Extrusions& extrusions, EntityId e) {
+  auto it = extrusions.find(e);
+  if (it == extrusions.end()) return std::nullopt;
+  return it->second;
+}
 
 }  // namespace
 
 void OccFactory::synchronize(Model& model) const {
   exportPoints(*shapes_, meshSizes_, model);
-  exportCurves(*shapes_, model);
-  exportSurfaces(*shapes_, model);
-  exportVolumes(*shapes_, model);
+  exportCurves(*shapes_, shapes_->extrusions, model);
+  exportSurfaces(*shapes_, shapes_->extrusions, model);
+  exportVolumes(*shapes_, shapes_->extrusions, model);
 }
 
 namespace {
@@ -141,12 +150,12 @@ void exportPoints(const OccShapes& s, const std::map<int, double>& sizes, Model&
 }
 
 // A curve starts at the vertex of its first parameter, whatever the edge's orientation.
-void exportCurves(const OccShapes& s, Model& model) {
+void exportCurves(const OccShapes& s, const Extrusions& extrusions, Model& model) {
   for (const auto& [tag, shape] : s.byTag[1]) {
     const TopoDS_Edge edge = TopoDS::Edge(shape.Oriented(TopAbs_FORWARD));
     const int start = s.tagOf(0, TopExp::FirstVertex(edge));
     const int end = s.tagOf(0, TopExp::LastVertex(edge));
-    model.addCurve(ModelCurve{tag, start, end, makeOccCurve(edge)});
+    model.addCurve(ModelCurve{tag, start, end, makeOccCurve(edge), extrusionOf(extrusions, {1, tag})});
   }
 }
 
@@ -160,10 +169,10 @@ std::vector<int> wireLoop(const OccShapes& s, const TopoDS_Face& face,
   return loop;
 }
 
-void exportSurfaces(const OccShapes& s, Model& model) {
+void exportSurfaces(const OccShapes& s, const Extrusions& extrusions, Model& model) {
   for (const auto& [tag, shape] : s.byTag[2]) {
     const TopoDS_Face face = TopoDS::Face(shape.Oriented(TopAbs_FORWARD));
-    ModelSurface surface{tag, {}, makeOccSurface(face), {}, {}};
+    ModelSurface surface{tag, {}, makeOccSurface(face), {}, {}, extrusionOf(extrusions, {2, tag})};
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
     surface.loops.push_back(wireLoop(s, face, outer));
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())
@@ -173,9 +182,9 @@ void exportSurfaces(const OccShapes& s, Model& model) {
   }
 }
 
-void exportVolumes(const OccShapes& s, Model& model) {
+void exportVolumes(const OccShapes& s, const Extrusions& extrusions, Model& model) {
   for (const auto& [tag, shape] : s.byTag[3]) {
-    ModelVolume volume{tag, {}};
+    ModelVolume volume{tag, {}, extrusionOf(extrusions, {3, tag})};
     for (TopExp_Explorer shell(shape, TopAbs_SHELL); shell.More(); shell.Next()) {
       volume.shells.emplace_back();
       for (TopExp_Explorer face(shell.Current(), TopAbs_FACE); face.More(); face.Next())

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "kernel/affine_map.h"
+#include "kernel/extrusion_motion.h"
 #include "kernel/model.h"
 
 namespace geomesh {
@@ -76,6 +77,14 @@ class OccFactory {
                                 bool deleteTools);
   // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
   void setBooleanTolerance(double tolerance) { booleanTolerance_ = tolerance; }
+
+  // Extrude{..}{shapes} (kernel/occ/occ_extrude.cpp): a translation or a rotation (not a
+  // twist) of points, curves and surfaces. For each shape: its top, the entity swept, then the
+  // lateral entities (swept by a curve's start then end point, or by a surface's curves in
+  // the order the surface stores them). New entities are numbered as OpenCASCADE's result holds them. Layers are
+  // recorded on the swept and lateral entities.
+  std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
+                                const ExtrusionLayers& layers);
 
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map);

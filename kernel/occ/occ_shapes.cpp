@@ -93,6 +93,7 @@ void OccShapes::unbind(int dim, int tag, bool recursive) {
   const TopoDS_Shape shape = found->second;
   tags[dim].UnBind(shape);
   byTag[dim].erase(found);
+  extrusions.erase({dim, tag});
   if (!recursive) return;
   for (int sub = dim - 1; sub >= 0; --sub)
     for (TopExp_Explorer it(shape, kShapeTypes[sub]); it.More(); it.Next())
@@ -100,6 +101,7 @@ void OccShapes::unbind(int dim, int tag, bool recursive) {
         const int subTag = tagOf(sub, it.Current());
         tags[sub].UnBind(it.Current());
         byTag[sub].erase(subTag);
+        extrusions.erase({sub, subTag});
       }
 }
 

@@ -22,6 +22,8 @@ struct OccShapes {
   TopTools_DataMapOfShapeInteger tags[4];
   std::map<int, TopoDS_Shape> wires;
   std::map<int, TopoDS_Shape> shells;
+  // Extruded entities: how they were swept (forgotten when the entity goes).
+  std::map<EntityId, ExtrusionRecord> extrusions;
 
   bool isBound(int dim, const TopoDS_Shape& s) const { return tags[dim].IsBound(s); }
   bool contains(int dim, int tag) const {
