@@ -148,6 +148,57 @@ void OccFactory::addEllipseArc(int tag, int startPoint, int centerPoint, int maj
 
 namespace {
 
+// A whole curve (no angles) or its arc between two angles, in the plane z = center.z.
+TopoDS_Edge conicEdge(const Handle(Geom_Curve) & conic, const std::vector<double>& angles,
+                      const std::string& what) {
+  if (angles.empty()) return BRepBuilderAPI_MakeEdge(conic).Edge();
+  if (angles.size() != 2 || !(angles[1] > angles[0]) ||
+      angles[1] - angles[0] > 2 * std::numbers::pi + 1e-12)
+    throw GeometryError(what + ": its angles must increase by at most 2 Pi");
+  if (angles[1] - angles[0] >= 2 * std::numbers::pi - 1e-12)
+    return BRepBuilderAPI_MakeEdge(conic).Edge();
+  return BRepBuilderAPI_MakeEdge(new Geom_TrimmedCurve(conic, angles[0], angles[1])).Edge();
+}
+
+}  // namespace
+
+int OccFactory::addCircle(int tag, Vec3 center, double radius, const std::vector<double>& angles) {
+  tag = primitiveTag(1, tag, "Circle");
+  const std::string what = "Circle " + std::to_string(tag);
+  if (!(radius > 0) || !std::isfinite(radius))
+    throw GeometryError(what + ": its radius must be positive");
+  const TopoDS_Shape edge = guarded(what, [&] {
+    Handle(Geom_Circle) circle = new Geom_Circle(gp_Ax2(toPnt(center), gp::DZ(), gp::DX()), radius);
+    return conicEdge(circle, angles, what);
+  });
+  shapes_->bindTree(1, tag, edge);
+  return tag;
+}
+
+int OccFactory::addEllipse(int tag, Vec3 center, double rx, double ry,
+                           const std::vector<double>& angles) {
+  tag = primitiveTag(1, tag, "Ellipse");
+  const std::string what = "Ellipse " + std::to_string(tag);
+  if (!(rx > 0) || !(ry > 0) || !std::isfinite(rx) || !std::isfinite(ry))
+    throw GeometryError(what + ": its radii must be positive");
+  if (ry > rx) throw GeometryError(what + ": its radius along x must not be smaller than along y");
+  const TopoDS_Shape edge = guarded(what, [&] {
+    Handle(Geom_Curve) conic =
+        rx == ry ? Handle(Geom_Curve)(new Geom_Circle(gp_Ax2(toPnt(center), gp::DZ(), gp::DX()), rx))
+                 : Handle(Geom_Curve)(new Geom_Ellipse(gp_Ax2(toPnt(center), gp::DZ(), gp::DX()), rx, ry));
+    return conicEdge(conic, angles, what);
+  });
+  shapes_->bindTree(1, tag, edge);
+  return tag;
+}
+
+// Wire(tag) = {curves}: an open or closed chain of curves, for pipes and lofts.
+void OccFactory::addWire(int tag, const std::vector<int>& curves) {
+  addChain(tag, curves, false);
+}
+
+namespace {
+
 TColgp_Array1OfPnt poles(const OccFactory& f, const std::vector<int>& points) {
   TColgp_Array1OfPnt out(1, static_cast<int>(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i)
@@ -237,9 +288,11 @@ void OccFactory::addBezier(int tag, const std::vector<int>& points) {
 
 // Curves in any order and orientation; OpenCASCADE chains them. A loop that does not close is
 // refused.
-void OccFactory::addCurveLoop(int tag, std::vector<int> curves) {
+void OccFactory::addCurveLoop(int tag, std::vector<int> curves) { addChain(tag, curves, true); }
+
+void OccFactory::addChain(int tag, const std::vector<int>& curves, bool closed) {
   if (tag < 0) tag = maxTag(kCurveLoop) + 1;
-  const std::string what = "Curve Loop " + std::to_string(tag);
+  const std::string what = (closed ? "Curve Loop " : "Wire ") + std::to_string(tag);
   if (shapes_->wires.contains(tag)) throw GeometryError(what + " already exists");
   if (curves.empty()) throw GeometryError(what + " has no curve");
   const TopoDS_Wire wire = guarded(what, [&] {
@@ -252,7 +305,7 @@ void OccFactory::addCurveLoop(int tag, std::vector<int> curves) {
     }
     return maker.Wire();
   });
-  if (!BRep_Tool::IsClosed(wire)) throw GeometryError(what + " is not closed");
+  if (closed && !BRep_Tool::IsClosed(wire)) throw GeometryError(what + " is not closed");
   shapes_->wires[tag] = wire;
 }
 

@@ -35,6 +35,12 @@ class OccFactory {
   void addBSpline(int tag, const std::vector<int>& points);  // cubic, clamped
   void addBezier(int tag, const std::vector<int>& points);
   void addCurveLoop(int tag, std::vector<int> curves);
+  // Circle(tag) = {x, y, z, r <, angle1, angle2>}, Ellipse(tag) = {x, y, z, rx, ry <, ..>}:
+  // whole curves or arcs in the plane z, from the x axis. Return the tag.
+  int addCircle(int tag, Vec3 center, double radius, const std::vector<double>& angles);
+  int addEllipse(int tag, Vec3 center, double rx, double ry, const std::vector<double>& angles);
+  // Wire(tag) = {curves}: a chain of curves, closed or not (tags shared with curve loops).
+  void addWire(int tag, const std::vector<int>& curves);
   void addPlaneSurface(int tag, std::vector<int> curveLoops);  // first loop outer, others holes
   void addFillingSurface(int tag, std::vector<int> curveLoops);
   void addSurfaceLoop(int tag, std::vector<int> surfaces);
@@ -86,6 +92,21 @@ class OccFactory {
   std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
                                 const ExtrusionLayers& layers);
 
+  // Lofts, fillets and chamfers (kernel/occ/occ_lofts_and_fillets.cpp).
+  // ThruSections(tag) = {wires}: the volume (or, makeSolid false, the surfaces) through the
+  // sections; ruled: plane faces between consecutive sections. Returns what it made.
+  std::vector<EntityId> addThruSections(int tag, const std::vector<int>& wires, bool ruled,
+                                        bool makeSolid = true);
+  // Fillet{volumes}{curves}{radii}: rounds the curves of the volumes (one radius, one per
+  // curve, or two per curve for a varying one); the volumes are replaced by new ones.
+  std::vector<EntityId> fillet(const std::vector<int>& volumes, const std::vector<int>& curves,
+                               const std::vector<double>& radii);
+  // Chamfer{volumes}{curves}{surfaces}{distances}: bevels the curves, the first distance
+  // measured on the surface given with each curve.
+  std::vector<EntityId> chamfer(const std::vector<int>& volumes, const std::vector<int>& curves,
+                                const std::vector<int>& surfaces,
+                                const std::vector<double>& distances);
+
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
   std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
@@ -115,6 +136,7 @@ class OccFactory {
   double booleanTolerance_ = 0;
 
   int primitiveTag(int dim, int tag, const char* what) const;
+  void addChain(int tag, const std::vector<int>& curves, bool closed);
 };
 
 }  // namespace geomesh
