@@ -107,6 +107,13 @@ class OccFactory {
                                 const std::vector<int>& surfaces,
                                 const std::vector<double>& distances);
 
+  // ShapeFromFile("x.step"), Merge "x.step" (kernel/occ/occ_import.cpp): the shapes of a
+  // STEP, IGES or BREP file, with new tags; returns those of the highest dimension. A missing
+  // or unreadable file is a GeometryError naming the path.
+  std::vector<EntityId> importShapes(const std::string& path);
+  // Save "x.brep" / "x.step": every entity that is not part of another one.
+  void exportShapes(const std::string& path) const;
+
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
   std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
