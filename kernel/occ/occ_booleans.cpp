@@ -142,7 +142,8 @@ std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) 
       const EntityId e{dim, shapes.bindNew(dim, it.Current())};
       if (!listed.insert(e).second) continue;
       out.push_back(e);
-      for (int sub = dim - 1; sub >= 0; --sub) TopExp::MapShapes(it.Current(), kTypes[sub], inListed);
+      for (int sub = dim - 1; sub >= 0; --sub)
+        TopExp::MapShapes(it.Current(), kTypes[sub], inListed);
     }
   }
   return out;
@@ -159,10 +160,12 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   if (tools.empty() && op != BooleanOperation::Fragments)
     throw GeometryError(name + ": no tool to operate with");
   std::vector<BooleanInput> inputs;
-  for (const EntityId& e : objects)
-    inputs.push_back({{e.dim, std::abs(e.tag)}, shapes_->find(e.dim, std::abs(e.tag)), deleteObjects, false, {}});
-  for (const EntityId& e : tools)
-    inputs.push_back({{e.dim, std::abs(e.tag)}, shapes_->find(e.dim, std::abs(e.tag)), deleteTools, false, {}});
+  auto add = [&](const EntityId& e, bool remove) {
+    const EntityId id{e.dim, std::abs(e.tag)};
+    inputs.push_back({id, shapes_->find(id.dim, id.tag), remove, false, {}});
+  };
+  for (const EntityId& e : objects) add(e, deleteObjects);
+  for (const EntityId& e : tools) add(e, deleteTools);
 
   std::unique_ptr<BRepAlgoAPI_BuilderAlgo> maker = makeOperation(op);
   const TopoDS_Shape result = guarded(name, [&] {

@@ -183,9 +183,9 @@ int OccFactory::addEllipse(int tag, Vec3 center, double rx, double ry,
     throw GeometryError(what + ": its radii must be positive");
   if (ry > rx) throw GeometryError(what + ": its radius along x must not be smaller than along y");
   const TopoDS_Shape edge = guarded(what, [&] {
-    Handle(Geom_Curve) conic =
-        rx == ry ? Handle(Geom_Curve)(new Geom_Circle(gp_Ax2(toPnt(center), gp::DZ(), gp::DX()), rx))
-                 : Handle(Geom_Curve)(new Geom_Ellipse(gp_Ax2(toPnt(center), gp::DZ(), gp::DX()), rx, ry));
+    const gp_Ax2 axis(toPnt(center), gp::DZ(), gp::DX());
+    Handle(Geom_Curve) conic = rx == ry ? Handle(Geom_Curve)(new Geom_Circle(axis, rx))
+                                        : Handle(Geom_Curve)(new Geom_Ellipse(axis, rx, ry));
     return conicEdge(conic, angles, what);
   });
   shapes_->bindTree(1, tag, edge);
@@ -268,7 +268,8 @@ void OccFactory::addBSpline(int tag, const std::vector<int>& points) {
   const TopoDS_Shape edge = guarded(what, [&] {
     const TColgp_Array1OfPnt p = poles(*this, points);
     const int degree = std::min(3, closed ? p.Length() - 2 : p.Length() - 1);
-    Handle(Geom_BSplineCurve) curve = closed ? periodicBSpline(p, degree) : clampedBSpline(p, degree);
+    Handle(Geom_BSplineCurve) curve =
+        closed ? periodicBSpline(p, degree) : clampedBSpline(p, degree);
     return edgeBetween(curve, a, b, what);
   });
   shapes_->bindTree(1, tag, edge);

@@ -124,7 +124,8 @@ std::vector<EntityId> OccFactory::extrude(const std::vector<EntityId>& shapes,
       out.push_back({e.dim, lateral});
       const int sourceTag = shapes_->tagOf(e.dim - 1, source);
       const int lateralTop = tagOf(e.dim - 1, guarded("Extrude", [&] { return s.top(source); }));
-      shapes_->extrusions[{e.dim, lateral}] = ExtrusionRecord{sourceTag, layers, lateralTop, motionRecord};
+      shapes_->extrusions[{e.dim, lateral}] =
+          ExtrusionRecord{sourceTag, layers, lateralTop, motionRecord};
     }
   }
   return out;

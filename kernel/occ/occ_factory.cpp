@@ -155,7 +155,8 @@ void exportCurves(const OccShapes& s, const Extrusions& extrusions, Model& model
     const TopoDS_Edge edge = TopoDS::Edge(shape.Oriented(TopAbs_FORWARD));
     const int start = s.tagOf(0, TopExp::FirstVertex(edge));
     const int end = s.tagOf(0, TopExp::LastVertex(edge));
-    model.addCurve(ModelCurve{tag, start, end, makeOccCurve(edge), extrusionOf(extrusions, {1, tag})});
+    model.addCurve(
+        ModelCurve{tag, start, end, makeOccCurve(edge), extrusionOf(extrusions, {1, tag})});
   }
 }
 

@@ -7,6 +7,7 @@
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
 #include "kernel/model.h"
+#include "kernel/solid_modeling.h"
 
 namespace geomesh {
 
@@ -18,7 +19,7 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 // Tags follow Gmsh's OpenCASCADE kernel: a shape's sub-shapes not known yet get the next free
 // tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
 // GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
-class OccFactory {
+class OccFactory final : public SolidModeling {
  public:
   OccFactory();
   ~OccFactory();
@@ -37,10 +38,11 @@ class OccFactory {
   void addCurveLoop(int tag, std::vector<int> curves);
   // Circle(tag) = {x, y, z, r <, angle1, angle2>}, Ellipse(tag) = {x, y, z, rx, ry <, ..>}:
   // whole curves or arcs in the plane z, from the x axis. Return the tag.
-  int addCircle(int tag, Vec3 center, double radius, const std::vector<double>& angles);
-  int addEllipse(int tag, Vec3 center, double rx, double ry, const std::vector<double>& angles);
+  int addCircle(int tag, Vec3 center, double radius, const std::vector<double>& angles) override;
+  int addEllipse(int tag, Vec3 center, double rx, double ry,
+                 const std::vector<double>& angles) override;
   // Wire(tag) = {curves}: a chain of curves, closed or not (tags shared with curve loops).
-  void addWire(int tag, const std::vector<int>& curves);
+  void addWire(int tag, const std::vector<int>& curves) override;
   void addPlaneSurface(int tag, std::vector<int> curveLoops);  // first loop outer, others holes
   void addFillingSurface(int tag, std::vector<int> curveLoops);
   void addSurfaceLoop(int tag, std::vector<int> surfaces);
@@ -55,40 +57,39 @@ class OccFactory {
   int addBox(int tag, Vec3 corner, Vec3 extent);
   // Sphere{xc, yc, zc, r, polar angle min, polar angle max, azimuthal opening}.
   int addSphere(int tag, Vec3 center, double radius, double angle1 = -1.5707963267948966,
-                double angle2 = 1.5707963267948966, double angle3 = 6.283185307179586);
+                double angle2 = 1.5707963267948966, double angle3 = 6.283185307179586) override;
   // Cylinder{x, y, z, dx, dy, dz, r, angle}: base centre, axis (its length is the height).
   int addCylinder(int tag, Vec3 base, Vec3 axis, double radius,
-                  double angle = 6.283185307179586);
+                  double angle = 6.283185307179586) override;
   // Cone{x, y, z, dx, dy, dz, r1, r2, angle}: r1 at the base, r2 at the top (either may be 0).
   int addCone(int tag, Vec3 base, Vec3 axis, double radius1, double radius2,
-              double angle = 6.283185307179586);
+              double angle = 6.283185307179586) override;
   // Torus{x, y, z, r1, r2, angle}: around the z axis.
   int addTorus(int tag, Vec3 center, double radius1, double radius2,
-               double angle = 6.283185307179586);
+               double angle = 6.283185307179586) override;
   // Wedge{x, y, z, dx, dy, dz, ltx}: a right-angled wedge, its top `ltx` long along x.
-  int addWedge(int tag, Vec3 corner, Vec3 extent, double topX = 0);
+  int addWedge(int tag, Vec3 corner, Vec3 extent, double topX = 0) override;
   // Rectangle{x, y, z, dx, dy, r}: in the plane z, corners rounded with radius r.
-  int addRectangle(int tag, Vec3 corner, double dx, double dy, double roundedRadius = 0);
+  int addRectangle(int tag, Vec3 corner, double dx, double dy, double roundedRadius = 0) override;
   // Disk{xc, yc, zc, rx, ry}: an elliptic disk in the plane z (rx >= ry).
-  int addDisk(int tag, Vec3 center, double rx, double ry);
+  int addDisk(int tag, Vec3 center, double rx, double ry) override;
 
   // Booleans (kernel/occ/occ_booleans.cpp) on (dim, tag) shapes of any dimension. The result
   // lists the entities of the result, in OpenCASCADE's order; tags follow Gmsh: an input left
   // untouched keeps its tags; a deleted input turned into one shape gives it its tag; the
   // other shapes of the result get new tags. Deleted inputs go, with their sub-shapes that
   // nothing else uses.
-  enum class BooleanOperation { Union, Intersection, Difference, Fragments };
   std::vector<EntityId> boolean(BooleanOperation operation, const std::vector<EntityId>& objects,
                                 const std::vector<EntityId>& tools, bool deleteObjects,
-                                bool deleteTools);
+                                bool deleteTools) override;
   // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
-  void setBooleanTolerance(double tolerance) { booleanTolerance_ = tolerance; }
+  void setBooleanTolerance(double tolerance) override { booleanTolerance_ = tolerance; }
 
   // Extrude{..}{shapes} (kernel/occ/occ_extrude.cpp): a translation or a rotation (not a
   // twist) of points, curves and surfaces. For each shape: its top, the entity swept, then the
-  // lateral entities (swept by a curve's start then end point, or by a surface's curves in
-  // the order the surface stores them). New entities are numbered as OpenCASCADE's result holds them. Layers are
-  // recorded on the swept and lateral entities.
+  // lateral entities (swept by a curve's start then end point, or by a surface's curves in the
+  // order the surface stores them). New entities are numbered as OpenCASCADE's result holds
+  // them. Layers are recorded on the swept and lateral entities.
   std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
                                 const ExtrusionLayers& layers);
 
@@ -96,23 +97,23 @@ class OccFactory {
   // ThruSections(tag) = {wires}: the volume (or, makeSolid false, the surfaces) through the
   // sections; ruled: plane faces between consecutive sections. Returns what it made.
   std::vector<EntityId> addThruSections(int tag, const std::vector<int>& wires, bool ruled,
-                                        bool makeSolid = true);
+                                        bool makeSolid = true) override;
   // Fillet{volumes}{curves}{radii}: rounds the curves of the volumes (one radius, one per
   // curve, or two per curve for a varying one); the volumes are replaced by new ones.
   std::vector<EntityId> fillet(const std::vector<int>& volumes, const std::vector<int>& curves,
-                               const std::vector<double>& radii);
+                               const std::vector<double>& radii) override;
   // Chamfer{volumes}{curves}{surfaces}{distances}: bevels the curves, the first distance
   // measured on the surface given with each curve.
   std::vector<EntityId> chamfer(const std::vector<int>& volumes, const std::vector<int>& curves,
                                 const std::vector<int>& surfaces,
-                                const std::vector<double>& distances);
+                                const std::vector<double>& distances) override;
 
   // ShapeFromFile("x.step"), Merge "x.step" (kernel/occ/occ_import.cpp): the shapes of a
   // STEP, IGES or BREP file, with new tags; returns those of the highest dimension. A missing
   // or unreadable file is a GeometryError naming the path.
-  std::vector<EntityId> importShapes(const std::string& path);
+  std::vector<EntityId> importShapes(const std::string& path) override;
   // Save "x.brep" / "x.step": every entity that is not part of another one.
-  void exportShapes(const std::string& path) const;
+  void exportShapes(const std::string& path) const override;
 
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map);

@@ -45,7 +45,8 @@ TopoDS_Shape readExchange(XSControl_Reader& reader, const std::string& path, con
 }
 
 TopoDS_Shape readShape(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw GeometryError("cannot open '" + path + "': no such file");
+  if (!std::filesystem::exists(path))
+    throw GeometryError("cannot open '" + path + "': no such file");
   const std::string ext = lowerExtension(path);
   if (ext == ".step" || ext == ".stp") {
     STEPControl_Reader reader;
@@ -62,7 +63,8 @@ TopoDS_Shape readShape(const std::string& path) {
       throw GeometryError("cannot read '" + path + "' as a BREP file");
     return shape;
   }
-  throw GeometryError("'" + path + "': not a STEP (.step, .stp), IGES (.iges, .igs) or BREP (.brep) file");
+  throw GeometryError("'" + path +
+                      "': not a STEP (.step, .stp), IGES (.iges, .igs) or BREP (.brep) file");
 }
 
 // OpenCASCADE's data exchange reports its progress and its parse errors on standard output;

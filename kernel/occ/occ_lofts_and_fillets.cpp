@@ -69,7 +69,8 @@ std::vector<EntityId> replaceVolumes(OccShapes& shapes, const std::vector<int>& 
   TopoDS_Compound results;
   BRep_Builder builder;
   builder.MakeCompound(results);
-  for (int v : volumes) builder.Add(results, guarded(what, [&] { return round(shapes.find(3, v)); }));
+  for (int v : volumes)
+    builder.Add(results, guarded(what, [&] { return round(shapes.find(3, v)); }));
   for (int v : volumes) shapes.unbind(3, v, true);
   std::vector<EntityId> out;
   for (TopExp_Explorer it(results, TopAbs_SOLID); it.More(); it.Next())
@@ -147,7 +148,8 @@ std::vector<EntityId> OccFactory::chamfer(const std::vector<int>& volumes,
     }
     maker.Build();
     if (!maker.IsDone())
-      throw GeometryError(what + ": OpenCASCADE could not bevel these curves (distance too large?)");
+      throw GeometryError(what +
+                          ": OpenCASCADE could not bevel these curves (distance too large?)");
     return maker.Shape();
   });
 }

@@ -157,8 +157,9 @@ bool isSimilarity(const AffineMap& map, double& scale) {
   scale = std::cbrt(std::abs(dot(c0, cross(c1, c2))));
   if (!(scale > 0)) return false;
   const double tol = 1e-12 * scale * scale;
-  return std::abs(dot(c0, c0) - scale * scale) < tol && std::abs(dot(c1, c1) - scale * scale) < tol &&
-         std::abs(dot(c2, c2) - scale * scale) < tol && std::abs(dot(c0, c1)) < tol &&
+  const double s2 = scale * scale;
+  return std::abs(dot(c0, c0) - s2) < tol && std::abs(dot(c1, c1) - s2) < tol &&
+         std::abs(dot(c2, c2) - s2) < tol && std::abs(dot(c0, c1)) < tol &&
          std::abs(dot(c0, c2)) < tol && std::abs(dot(c1, c2)) < tol;
 }
 

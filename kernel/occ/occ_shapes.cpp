@@ -48,7 +48,8 @@ const TopoDS_Shape& OccShapes::find(int dim, int tag) const {
 
 const TopoDS_Shape& OccShapes::findWire(int tag) const {
   auto it = wires.find(tag);
-  if (it == wires.end()) throw GeometryError("Curve Loop " + std::to_string(tag) + " is not defined");
+  if (it == wires.end())
+    throw GeometryError("Curve Loop " + std::to_string(tag) + " is not defined");
   return it->second;
 }
 

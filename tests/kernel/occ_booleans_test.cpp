@@ -34,7 +34,8 @@ OccFactory overlappingCubes() {
 
 TEST(OccBooleans, UnionIntersectionDifferenceWithDelete) {
   OccFactory occ = overlappingCubes();
-  EXPECT_EQ(occ.boolean(Op::Union, {{3, 1}}, {{3, 2}}, true, true), (std::vector<EntityId>{{3, 1}}));
+  EXPECT_EQ(occ.boolean(Op::Union, {{3, 1}}, {{3, 2}}, true, true),
+            (std::vector<EntityId>{{3, 1}}));
   EXPECT_NEAR(occ.volume(1), 2 - 0.125, 1e-9);
   EXPECT_EQ(counts(occ), (std::vector<int>{20, 30, 12, 1}));
 
@@ -87,7 +88,8 @@ TEST(OccBooleans, FragmentsOfSeveralVolumes) {
   occ.addBox(2, {0.5, 0, 0}, {1, 1, 1});
   occ.addBox(3, {3, 0, 0}, {1, 1, 1});
   occ.addSphere(4, {1.2, 0.5, 1}, 0.3);
-  const std::vector<EntityId> r = occ.boolean(Op::Fragments, {{3, 1}, {3, 2}}, {{3, 3}, {3, 4}}, true, true);
+  const std::vector<EntityId> r =
+      occ.boolean(Op::Fragments, {{3, 1}, {3, 2}}, {{3, 3}, {3, 4}}, true, true);
   EXPECT_EQ(tagsOf(r), (std::vector<int>{4, 5, 6, 7, 8, 3, 9}));
   double total = 0;
   for (const EntityId& e : r) total += occ.volume(e.tag);
@@ -102,7 +104,8 @@ TEST(OccBooleans, FragmentsInTwoDimensions) {
   occ.addRectangle(1, {0, 0, 0}, 2, 1);
   occ.addRectangle(2, {1, 0.5, 0}, 2, 1);
   occ.addDisk(3, {0.5, 0.5, 0}, 0.3, 0.3);
-  const std::vector<EntityId> r = occ.boolean(Op::Fragments, {{2, 1}}, {{2, 2}, {2, 3}}, true, true);
+  const std::vector<EntityId> r =
+      occ.boolean(Op::Fragments, {{2, 1}}, {{2, 2}, {2, 3}}, true, true);
   EXPECT_EQ(tagsOf(r), (std::vector<int>{4, 5, 3, 6}));
   double total = 0;
   for (const EntityId& e : r) total += occ.area(e.tag);

@@ -42,7 +42,8 @@ TEST(OccExtrude, CurveThenSurfaceThenRevolution) {
   EXPECT_EQ(tagList(r), (std::vector<int>{4, 1, 2, 3}));
   r = occ.extrude({{2, 1}}, ExtrusionMotion::translate({0, 0, 1}), {});
   EXPECT_EQ(tagList(r), (std::vector<int>{6, 1, 2, 3, 4, 5}));
-  r = occ.extrude({{0, 2}}, ExtrusionMotion::rotate({0, 0, 1}, {0, 0, 0}, std::numbers::pi / 2), {});
+  const auto quarterTurn = ExtrusionMotion::rotate({0, 0, 1}, {0, 0, 0}, std::numbers::pi / 2);
+  r = occ.extrude({{0, 2}}, quarterTurn, {});
   EXPECT_EQ(r, (std::vector<EntityId>{{0, 9}, {1, 13}}));
   EXPECT_NEAR(occ.length(13), std::numbers::pi / 2, 1e-9);
   Model model;
