@@ -41,12 +41,13 @@ class SolidModeling {
   virtual void addWire(int tag, const std::vector<int>& curves) = 0;
 
   // BooleanUnion/Intersection/Difference/Fragments{objects}{tools}, each list with or without
-  // Delete. Returns the entities of the result.
+  // Delete. Returns the entities of the result. tag >= 0 (BooleanUnion(tag) = ..): the result,
+  // which must then be one entity of its dimension, takes that tag.
   enum class BooleanOperation { Union, Intersection, Difference, Fragments };
   virtual std::vector<EntityId> boolean(BooleanOperation operation,
                                         const std::vector<EntityId>& objects,
                                         const std::vector<EntityId>& tools, bool deleteObjects,
-                                        bool deleteTools) = 0;
+                                        bool deleteTools, int tag) = 0;
   // Geometry.ToleranceBoolean.
   virtual void setBooleanTolerance(double tolerance) = 0;
 

@@ -12,6 +12,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 
+#include <algorithm>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -128,6 +129,28 @@ TopoDS_Shape unify(const TopoDS_Shape& shape, std::vector<BooleanInput>& inputs)
   return unifier.Shape();
 }
 
+// The result's shapes of its highest dimension.
+std::vector<TopoDS_Shape> topShapes(const TopoDS_Shape& result, int& dim) {
+  std::vector<TopoDS_Shape> top;
+  for (dim = 3; dim >= 0 && top.empty(); --dim)
+    for (TopExp_Explorer it(result, kTypes[dim]); it.More(); it.Next())
+      if (std::none_of(top.begin(), top.end(),
+                       [&](const TopoDS_Shape& s) { return s.IsSame(it.Current()); }))
+        top.push_back(it.Current());
+  ++dim;
+  return top;
+}
+
+// BooleanUnion(tag) = ..: the result must be one shape of its highest dimension.
+TopoDS_Shape taggedShape(const TopoDS_Shape& result, int tag, const std::string& name, int& dim) {
+  const std::vector<TopoDS_Shape> top = topShapes(result, dim);
+  if (top.size() != 1)
+    throw GeometryError(name + " " + std::to_string(tag) + ": its result has " +
+                        std::to_string(top.size()) + " " + entityKind(dim) +
+                        " entities, which cannot all take the one tag " + std::to_string(tag));
+  return top[0];
+}
+
 // Binds the result's shapes, highest dimension first, in the result's order: those not bound
 // yet get new tags, depth first. Lists each shape that is not part of one listed before.
 std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) {
@@ -154,7 +177,7 @@ std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) 
 std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
                                           const std::vector<EntityId>& objects,
                                           const std::vector<EntityId>& tools, bool deleteObjects,
-                                          bool deleteTools) {
+                                          bool deleteTools, int tag) {
   const std::string name = operationName(op);
   if (objects.empty()) throw GeometryError(name + ": no object to operate on");
   if (tools.empty() && op != BooleanOperation::Fragments)
@@ -177,9 +200,20 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
     return op == BooleanOperation::Union ? unify(shape, inputs) : shape;
   });
 
+  int taggedDim = 0;
+  const TopoDS_Shape tagged =
+      tag >= 0 ? taggedShape(result, tag, name, taggedDim) : TopoDS_Shape();
+
   // Deleted inputs go, unless the result holds them untouched.
   for (const BooleanInput& in : inputs)
     if (in.remove && !in.unchanged()) shapes_->unbind(in.id.dim, in.id.tag, true);
+  // A tag given to the result goes to its shape before any other.
+  if (tag >= 0 && !shapes_->isBound(taggedDim, tagged)) {
+    if (shapes_->contains(taggedDim, tag))
+      throw GeometryError(name + " " + std::to_string(tag) + ": " + entityName(taggedDim, tag) +
+                          " already exists");
+    shapes_->bindShape(taggedDim, tag, tagged);
+  }
   // A deleted input turned into a single shape of its dimension passes its tag on (to that
   // shape alone: its sub-shapes are numbered with the rest of the result).
   for (const BooleanInput& in : inputs) {

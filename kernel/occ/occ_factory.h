@@ -81,7 +81,7 @@ class OccFactory final : public SolidModeling {
   // nothing else uses.
   std::vector<EntityId> boolean(BooleanOperation operation, const std::vector<EntityId>& objects,
                                 const std::vector<EntityId>& tools, bool deleteObjects,
-                                bool deleteTools) override;
+                                bool deleteTools, int tag = -1) override;
   // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
   void setBooleanTolerance(double tolerance) override { booleanTolerance_ = tolerance; }
 

@@ -146,6 +146,21 @@ TEST(OccBooleans, UnionMergesCoplanarFaces) {
   EXPECT_NEAR(occ.volume(1), 3 - 0.25, 1e-9);
 }
 
+// BooleanDifference(3) = ..: the result takes the tag given; a result of several volumes
+// cannot, and the model stays as it was.
+TEST(OccBooleans, GivenTag) {
+  OccFactory occ = overlappingCubes();
+  occ.addBox(5, {5, 0, 0}, {1, 1, 1});
+  EXPECT_EQ(tagsOf(occ.boolean(Op::Difference, {{3, 1}}, {{3, 2}}, true, true, 3)),
+            (std::vector<int>{3}));
+  EXPECT_EQ(occ.tags(3), (std::vector<int>{3, 5}));
+  EXPECT_EQ(occ.maxTag(0), 38);  // numbered after box 5, as the reference numbers them
+  occ.addBox(6, {10, 0, 0}, {1, 1, 1});
+  occ.addBox(7, {10.5, 0, 0}, {1, 1, 1});
+  EXPECT_THROW(occ.boolean(Op::Fragments, {{3, 6}}, {{3, 7}}, true, true, 20), GeometryError);
+  EXPECT_EQ(occ.tags(3), (std::vector<int>{3, 5, 6, 7}));
+}
+
 TEST(OccBooleans, BadInput) {
   OccFactory occ = overlappingCubes();
   try {
