@@ -12,7 +12,7 @@
 #include "app/mesh_summary.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/session.h"
-#include "kernel/geo/geo_unrolled_writer.h"
+#include "kernel/unrolled_geo_hooks.h"
 #include "mesh/pipeline/generate.h"
 #include "io/msh_reader.h"
 #include "io/msh_writer.h"
@@ -125,7 +125,7 @@ void writeUnrolled(const CommandLine& cl, Session& session, ConsoleLog& log) {
   log.info("Writing '" + path + "'...");
   {
     std::ofstream out(partial, std::ios::binary);
-    writeUnrolledGeo(session.geo(), out, meshConstraintHooks(session.model().meshConstraints()));
+    session.factory().writeUnrolled(out, meshConstraintHooks(session.model().meshConstraints()));
     out.close();
     if (!out) {
       std::filesystem::remove(partial);

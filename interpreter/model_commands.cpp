@@ -10,7 +10,7 @@
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
 #include "interpreter/session.h"
-#include "kernel/geo/geo_unrolled_writer.h"
+#include "kernel/unrolled_geo_hooks.h"
 #include "mesh/pipeline/generate.h"
 #include "io/msh_reader.h"
 #include "io/msh_writer.h"
@@ -177,8 +177,8 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
     };
   } else if (ext == ".geo_unrolled") {
     write = [this](std::ostream& out) {
-      writeUnrolledGeo(session_.geo(), out,
-                       meshConstraintHooks(session_.model().meshConstraints()));
+      session_.factory().writeUnrolled(out,
+                                       meshConstraintHooks(session_.model().meshConstraints()));
     };
   } else {
     warn(where, "'" + command.words[0] + "' cannot write '" + shown + "': this format is not " +

@@ -25,7 +25,7 @@ void Session::runText(const std::string& text, const std::string& fileName) {
 
 void Session::synchronize() {
   if (!meshFromFile_) {
-    geo_.synchronize(model_);
+    factories_.synchronize(model_);
     return;
   }
   if (hasGeometry())
@@ -33,11 +33,7 @@ void Session::synchronize() {
         "the script defines geometry besides a merged mesh file: mixing both is not supported yet");
 }
 
-bool Session::hasGeometry() const {
-  for (int dim = 0; dim <= 3; ++dim)
-    if (geo_.maxTag(dim) > 0) return true;
-  return false;
-}
+bool Session::hasGeometry() const { return factories_.hasEntities(); }
 
 void Session::readMesh(const std::string& path) {
   readMshFile(path, model_, mesh_);
@@ -79,7 +75,7 @@ void Session::generate(int dim) {
 }
 
 void Session::clearModel() {
-  geo_.clear();
+  factories_.clear();
   model_ = Model();
   mesh_ = Mesh();
   origins_.clear();

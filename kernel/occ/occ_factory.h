@@ -6,6 +6,7 @@
 
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
+#include "kernel/geometry_factory.h"
 #include "kernel/model.h"
 #include "kernel/solid_modeling.h"
 
@@ -19,23 +20,27 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 // Tags follow Gmsh's OpenCASCADE kernel: a shape's sub-shapes not known yet get the next free
 // tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
 // GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
-class OccFactory final : public SolidModeling {
+class OccFactory final : public GeometryFactory, public SolidModeling {
  public:
   OccFactory();
   ~OccFactory();
   OccFactory(OccFactory&&) noexcept;
   OccFactory& operator=(OccFactory&&) noexcept;
 
+  std::string name() const override { return "OpenCASCADE"; }
+  SolidModeling* solidModeling() override { return this; }
+
   // Elementary entities (kernel/occ/occ_curves.cpp, occ_surfaces.cpp), as the built-in
   // factory takes them. Curves join the vertices of their points; loops are wires.
-  void addPoint(int tag, Vec3 xyz, double meshSize);
-  void addLine(int tag, int startPoint, int endPoint);
-  void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint);
-  void addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint, int endPoint);
-  void addSpline(int tag, const std::vector<int>& points);   // interpolating
-  void addBSpline(int tag, const std::vector<int>& points);  // cubic, clamped
-  void addBezier(int tag, const std::vector<int>& points);
-  void addCurveLoop(int tag, std::vector<int> curves);
+  void addPoint(int tag, Vec3 xyz, double meshSize) override;
+  void addLine(int tag, int startPoint, int endPoint) override;
+  void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint) override;
+  void addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint,
+                     int endPoint) override;
+  void addSpline(int tag, const std::vector<int>& points) override;   // interpolating
+  void addBSpline(int tag, const std::vector<int>& points) override;  // cubic, clamped
+  void addBezier(int tag, const std::vector<int>& points) override;
+  void addCurveLoop(int tag, std::vector<int> curves) override;
   // Circle(tag) = {x, y, z, r <, angle1, angle2>}, Ellipse(tag) = {x, y, z, rx, ry <, ..>}:
   // whole curves or arcs in the plane z, from the x axis. Return the tag.
   int addCircle(int tag, Vec3 center, double radius, const std::vector<double>& angles) override;
@@ -43,18 +48,19 @@ class OccFactory final : public SolidModeling {
                  const std::vector<double>& angles) override;
   // Wire(tag) = {curves}: a chain of curves, closed or not (tags shared with curve loops).
   void addWire(int tag, const std::vector<int>& curves) override;
-  void addPlaneSurface(int tag, std::vector<int> curveLoops);  // first loop outer, others holes
-  void addFillingSurface(int tag, std::vector<int> curveLoops);
-  void addSurfaceLoop(int tag, std::vector<int> surfaces);
-  void addVolume(int tag, std::vector<int> surfaceLoops);
+  // First loop outer, others holes.
+  void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
+  void addFillingSurface(int tag, std::vector<int> curveLoops) override;
+  void addSurfaceLoop(int tag, std::vector<int> surfaces) override;
+  void addVolume(int tag, std::vector<int> surfaceLoops) override;
   // MeshSize{points} = size: the prescribed mesh size at the points.
-  void setMeshSize(const std::vector<int>& points, double size);
+  void setMeshSize(const std::vector<int>& points, double size) override;
 
   // Primitives (kernel/occ/occ_primitives.cpp). Each returns its tag.
   // An axis-aligned box with a corner at `corner` and the opposite corner at corner + extent
   // (extents may be negative, not zero). Its 8 points, 12 curves and 6 surfaces get the next
   // free tags of their dimensions.
-  int addBox(int tag, Vec3 corner, Vec3 extent);
+  int addBox(int tag, Vec3 corner, Vec3 extent) override;
   // Sphere{xc, yc, zc, r, polar angle min, polar angle max, azimuthal opening}.
   int addSphere(int tag, Vec3 center, double radius, double angle1 = -1.5707963267948966,
                 double angle2 = 1.5707963267948966, double angle3 = 6.283185307179586) override;
@@ -91,7 +97,7 @@ class OccFactory final : public SolidModeling {
   // order the surface stores them). New entities are numbered as OpenCASCADE's result holds
   // them. Layers are recorded on the swept and lateral entities.
   std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
-                                const ExtrusionLayers& layers);
+                                const ExtrusionLayers& layers) override;
 
   // Lofts, fillets and chamfers (kernel/occ/occ_lofts_and_fillets.cpp).
   // ThruSections(tag) = {wires}: the volume (or, makeSolid false, the surfaces) through the
@@ -116,27 +122,28 @@ class OccFactory final : public SolidModeling {
   void exportShapes(const std::string& path) const override;
 
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
-  void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
-  std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
-  void remove(const std::vector<EntityId>& shapes, bool recursive);
-  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes, bool combined) const;
-  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const;
-  BoundingBox boundingBox(EntityId shape) const;  // as Gmsh's, enlarged by 1e-7 each side
-  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const;
-  bool contains(EntityId e) const;
-  std::vector<int> tags(int dim) const;  // ascending
-  Vec3 pointCoordinates(int tag) const;
+  void transform(const std::vector<EntityId>& shapes, const AffineMap& map) override;
+  std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes) override;
+  void remove(const std::vector<EntityId>& shapes, bool recursive) override;
+  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes, bool combined) const override;
+  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const override;
+  // As the reference gives it: OpenCASCADE's box, which holds the shape's tolerance (1e-7).
+  BoundingBox boundingBox(EntityId shape) const override;
+  // Entities of `dim` whose tight box is inside `box` (to 1e-8 of the box's diagonal).
+  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const override;
+  bool contains(EntityId e) const override;
+  std::vector<int> tags(int dim) const override;  // ascending
+  Vec3 pointCoordinates(int tag) const override;
 
   double volume(int tag) const;  // of the volume `tag`; throws GeometryError if undefined
   double area(int tag) const;    // of the surface `tag`
   double length(int tag) const;  // of the curve `tag`
   // The largest tag bound; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
-  int maxTag(int kind) const;
-  enum : int { kCurveLoop = 4, kSurfaceLoop = 5 };
+  int maxTag(int kind) const override;
 
   // Adds (or replaces) this factory's entities in the model; other entities are kept.
-  void synchronize(Model& model) const;
-  void clear();
+  void synchronize(Model& model) const override;
+  void clear() override;
 
  private:
   std::unique_ptr<OccShapes> shapes_;

@@ -113,9 +113,17 @@ BoundingBox occBox(const TopoDS_Shape& shape) {
   return result;
 }
 
-bool inside(const BoundingBox& inner, const BoundingBox& outer) {
-  return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.min.z >= outer.min.z &&
-         inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+// The tight box of the shape (without the tolerance OpenCASCADE adds around it).
+BoundingBox tightBox(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, false, false);
+  BoundingBox result;
+  if (box.IsVoid()) return result;
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  result.include(Vec3{x0, y0, z0});
+  result.include(Vec3{x1, y1, z1});
+  return result;
 }
 
 }  // namespace
@@ -124,11 +132,18 @@ BoundingBox OccFactory::boundingBox(EntityId shape) const {
   return occBox(shapes_->find(shape.dim, std::abs(shape.tag)));
 }
 
+// Entities whose tight box is inside `box`, to 1e-8 of the box's diagonal.
 std::vector<int> OccFactory::entitiesInBox(int dim, const BoundingBox& box) const {
   std::vector<int> out;
-  if (dim < 0 || dim > 3) return out;
+  if (dim < 0 || dim > 3 || box.empty()) return out;
+  const double tol = 1e-8 * distance(box.min, box.max);
+  auto within = [&](const BoundingBox& b) {
+    return !b.empty() && b.min.x >= box.min.x - tol && b.min.y >= box.min.y - tol &&
+           b.min.z >= box.min.z - tol && b.max.x <= box.max.x + tol &&
+           b.max.y <= box.max.y + tol && b.max.z <= box.max.z + tol;
+  };
   for (const auto& [tag, shape] : shapes_->byTag[dim])
-    if (inside(occBox(shape), box)) out.push_back(tag);
+    if (within(tightBox(shape))) out.push_back(tag);
   return out;
 }
 
