@@ -204,6 +204,9 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   const std::string ext = extensionOf(file);
   if (ext == ".geo" || ext == ".opt" || ext == ".geo_unrolled")
     return executeInclude(command, where);
+  if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep" ||
+      ext == ".brp")
+    return mergeCadFile(file, where);
   if (ext != ".msh") {
     warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo, .opt, " +
                     ".geo_unrolled and .msh); ignored");

@@ -160,6 +160,7 @@ std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr
       return shapes;
     }
     if (kind == "Extrude" && shape.parts.size() == 2) return extrude(shape);
+    if (auto made = solidOperation(shape)) return made;
   } catch (const GeometryError& error) {
     fail(shape.loc, error.what());
   }

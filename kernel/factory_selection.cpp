@@ -30,6 +30,8 @@ bool FactorySelection::select(const std::string& name) {
   return false;
 }
 
+SolidModeling& FactorySelection::solidModeler() { return factories_->occ; }
+
 void FactorySelection::onHandover(FallbackFactory::Handover handover) {
   factories_->occFirst.onHandover(std::move(handover));
 }

@@ -19,6 +19,8 @@ class FactorySelection {
   FactorySelection& operator=(const FactorySelection&) = delete;
 
   GeometryFactory& current() { return *current_; }
+  // The OpenCASCADE factory's solid modeling, whichever factory is selected (Merge "x.step").
+  SolidModeling& solidModeler();
   const GeometryFactory& current() const { return *current_; }
   // "OpenCASCADE"; "Built-in" (or "built-in", "Geo"). False for another name (nothing changes).
   bool select(const std::string& name);

@@ -16,6 +16,9 @@ class SolidModeling {
  public:
   virtual ~SolidModeling() = default;
 
+  // Whether the entity is one of this modeler's (and not, say, the built-in kernel's).
+  virtual bool owns(EntityId e) const = 0;
+
   // Sphere{xc, yc, zc, r <, polar angle min, polar angle max, azimuthal opening>}.
   virtual int addSphere(int tag, Vec3 center, double radius, double angle1, double angle2,
                         double angle3) = 0;

@@ -17,6 +17,8 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_factory.h"
@@ -48,15 +50,37 @@ struct BooleanInput {
   bool unchanged() const { return !deleted && modified.IsEmpty(); }
 };
 
-// OpenCASCADE's own account of a failed operation, in one line.
+// OpenCASCADE's alerts, in words.
+constexpr std::pair<std::string_view, std::string_view> kAlerts[] = {
+    {"BOPAlgo_AlertBOPNotAllowed",
+     "this operation is not defined for shapes of these dimensions (a union of a volume and a "
+     "point, say)"},
+    {"BOPAlgo_AlertTooFewArguments", "it needs at least one object and one tool"},
+    {"BOPAlgo_AlertNullInputShapes", "one of its shapes is empty"},
+    {"BOPAlgo_AlertIntersectionFailed", "the shapes could not be intersected"},
+    {"BOPAlgo_AlertIntersectionOfPairOfShapesFailed", "two of the shapes could not be intersected"},
+    {"BOPAlgo_AlertSelfInterferingShape", "one of the shapes intersects itself"},
+    {"BOPAlgo_AlertBuilderFailed", "the pieces could not be assembled"},
+    {"BOPAlgo_AlertSolidBuilderFailed", "the volumes of the result could not be built"},
+    {"BOPAlgo_AlertMultiDimensionalArguments",
+     "its objects (or its tools) mix dimensions, which this operation does not allow"},
+};
+
+// OpenCASCADE's account of a failed operation, in one line: its alerts, in words when known.
 std::string failureReason(const BRepAlgoAPI_BuilderAlgo& maker) {
   std::ostringstream report;
   if (!maker.GetReport().IsNull()) maker.GetReport()->Dump(report);
-  std::string text = report.str();
-  for (char& c : text)
+  const std::string text = report.str();
+  std::string reason;
+  for (const auto& [alert, words] : kAlerts)
+    if (text.find(alert) != std::string::npos)
+      reason += (reason.empty() ? "" : "; ") + std::string(words);
+  if (!reason.empty()) return reason;
+  std::string raw = text;
+  for (char& c : raw)
     if (c == '\n' || c == '\r') c = ' ';
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text.empty() ? "OpenCASCADE could not compute it" : text;
+  while (!raw.empty() && raw.back() == ' ') raw.pop_back();
+  return raw.empty() ? "OpenCASCADE could not compute it" : raw;
 }
 
 std::unique_ptr<BRepAlgoAPI_BuilderAlgo> makeOperation(OccFactory::BooleanOperation op) {

@@ -29,6 +29,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
 
   std::string name() const override { return "OpenCASCADE"; }
   SolidModeling* solidModeling() override { return this; }
+  bool owns(EntityId e) const override { return contains({e.dim, e.tag < 0 ? -e.tag : e.tag}); }
 
   // Elementary entities (kernel/occ/occ_curves.cpp, occ_surfaces.cpp), as the built-in
   // factory takes them. Curves join the vertices of their points; loops are wires.
