@@ -221,8 +221,16 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     const StageTimer timer(3);
     const ExtrusionMesher extruded(model);
     const VolumeAlgorithm& volume = volumeAlgorithmFor(options.algorithm3D);
-    for (const auto& entry : model.volumes())
-      if (!extruded.meshesVolume(entry.first)) volume.mesh(model, options, entry.first, mesh);
+    const std::string why = volumeAlgorithmUnavailable(options.algorithm3D);
+    bool warned = why.empty();
+    for (const auto& entry : model.volumes()) {
+      if (extruded.meshesVolume(entry.first)) continue;
+      if (!warned)
+        log.warning("Mesh.Algorithm3D " + why + ": volumes are meshed with " + volume.title +
+                    " (" + std::to_string(volume.code) + ")");
+      warned = true;
+      volume.mesh(model, options, entry.first, mesh);
+    }
     extruded.meshVolumes(mesh);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
   }

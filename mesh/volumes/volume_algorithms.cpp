@@ -45,4 +45,11 @@ const VolumeAlgorithm& volumeAlgorithmFor(int code) {
   return *findVolumeAlgorithm(row ? row->fallback : kDelaunay);
 }
 
+std::string volumeAlgorithmUnavailable(int code) {
+  const VolumeAlgorithm* row = findVolumeAlgorithm(code);
+  if (!row) return std::to_string(code) + " is not a 3D meshing algorithm";
+  if (row->mesh) return {};
+  return std::to_string(code) + " (" + row->title + ") is not available";
+}
+
 }  // namespace geomesh

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "kernel/model.h"
@@ -27,8 +28,9 @@ std::span<const VolumeAlgorithm> volumeAlgorithms();
 const VolumeAlgorithm* findVolumeAlgorithm(int code);
 const VolumeAlgorithm* findVolumeAlgorithm(std::string_view name);
 // The row that meshes a volume asking for `code`: its own if available, else its fallback
-// (Delaunay for the codes no row knows). Volumes have always been meshed whatever the code,
-// without a warning.
+// (Delaunay for the codes no row knows).
 const VolumeAlgorithm& volumeAlgorithmFor(int code);
+// Why `code` cannot mesh volumes itself ("10 (HXT) is not available"); empty when it can.
+std::string volumeAlgorithmUnavailable(int code);
 
 }  // namespace geomesh
