@@ -279,9 +279,25 @@ std::vector<EntityId> Interpreter::shapesFromFile(const ast::Expr& shape) {
   }
 }
 
+// Closest{x, y, z}{ Surface{..}; }: the shapes, nearest first.
+std::vector<EntityId> Interpreter::closestShapes(const ast::Expr& shape) {
+  const std::vector<double> p = shapeArguments(shape);
+  if (shape.parts.size() != 2 || p.size() != 3 || !shape.parts[1].isBlock)
+    fail(shape.loc, "Closest takes a point and shapes, as in Closest{x, y, z}{ Surface{1:4}; }");
+  const std::vector<EntityId> shapes = shapesIn(shape.parts[1]);
+  SolidModeling* solids = solidModeling("Closest", shape.loc);
+  if (!solids) return {};
+  try {
+    return solids->closest({p[0], p[1], p[2]}, shapes);
+  } catch (const GeometryError& error) {
+    fail(shape.loc, error.what());
+  }
+}
+
 // The OpenCASCADE operations that give shapes as values; nullopt for the others.
 std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr& shape) {
   const std::string& word = shape.words[0];
+  if (word == "Closest") return closestShapes(shape);
   if (word.rfind("Boolean", 0) == 0) return booleanShapes(word, shape.parts, -1, shape.loc);
   if (word == "Fillet" || word == "Chamfer") return roundedShapes(shape);
   if (word == "ShapeFromFile") return shapesFromFile(shape);

@@ -140,6 +140,7 @@ class Interpreter {
   std::vector<EntityId> roundedShapes(const ast::Expr& shape);
   void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
+  std::vector<EntityId> closestShapes(const ast::Expr& shape);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
   void mergeCadFile(const std::string& file, const SourceLocation& where);
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);

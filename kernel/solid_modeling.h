@@ -66,6 +66,10 @@ class SolidModeling {
                                         const std::vector<int>& surfaces,
                                         const std::vector<double>& distances) = 0;
 
+  // Closest{x, y, z}{shapes}: the shapes by increasing distance to the point (0 inside a
+  // volume); ties keep their order.
+  virtual std::vector<EntityId> closest(Vec3 point, const std::vector<EntityId>& shapes) const = 0;
+
   // ShapeFromFile / Merge of a STEP, IGES or BREP file; Save of a .brep or .step file.
   virtual std::vector<EntityId> importShapes(const std::string& path) = 0;
   virtual void exportShapes(const std::string& path) const = 0;

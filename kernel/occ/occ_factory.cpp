@@ -137,6 +137,7 @@ void OccFactory::synchronize(Model& model) const {
   exportCurves(*shapes_, shapes_->extrusions, model);
   exportSurfaces(*shapes_, shapes_->extrusions, model);
   exportVolumes(*shapes_, shapes_->extrusions, model);
+  applyConstraints(*shapes_, model);
 }
 
 namespace {

@@ -122,6 +122,13 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   // Save "x.brep" / "x.step": every entity that is not part of another one.
   void exportShapes(const std::string& path) const override;
 
+  // Mesh constraints on its entities (kernel/occ/occ_constraints.cpp), recorded by tag as the
+  // built-in factory records them on its own.
+  void setPeriodic(int dim, const std::vector<int>& slaves, const std::vector<int>& masters,
+                   const AffineMap& map) override;
+  void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag) override;
+  void addCompound(int dim, const std::vector<int>& tags) override;
+
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map) override;
   std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes) override;
@@ -132,6 +139,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   BoundingBox boundingBox(EntityId shape) const override;
   // Entities of `dim` whose tight box is inside `box` (to 1e-8 of the box's diagonal).
   std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const override;
+  std::vector<EntityId> closest(Vec3 point, const std::vector<EntityId>& shapes) const override;
   bool contains(EntityId e) const override;
   std::vector<int> tags(int dim) const override;  // ascending
   Vec3 pointCoordinates(int tag) const override;

@@ -3,6 +3,8 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -144,6 +146,27 @@ std::vector<int> OccFactory::entitiesInBox(int dim, const BoundingBox& box) cons
   };
   for (const auto& [tag, shape] : shapes_->byTag[dim])
     if (within(tightBox(shape))) out.push_back(tag);
+  return out;
+}
+
+std::vector<EntityId> OccFactory::closest(Vec3 point,
+                                          const std::vector<EntityId>& shapes) const {
+  const TopoDS_Vertex vertex = BRepBuilderAPI_MakeVertex(gp_Pnt(point.x, point.y, point.z));
+  std::vector<std::pair<double, EntityId>> byDistance;
+  for (const EntityId& e : shapes) {
+    const TopoDS_Shape& shape = shapes_->find(e.dim, std::abs(e.tag));
+    const double d = guarded("Closest", [&] {
+      BRepExtrema_DistShapeShape distance(vertex, shape);
+      if (!distance.IsDone())
+        throw GeometryError("Closest: no distance to " + entityName(e.dim, std::abs(e.tag)));
+      return distance.Value();
+    });
+    byDistance.push_back({d, e});
+  }
+  std::stable_sort(byDistance.begin(), byDistance.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<EntityId> out;
+  for (const auto& entry : byDistance) out.push_back(entry.second);
   return out;
 }
 

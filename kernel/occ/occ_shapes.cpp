@@ -95,6 +95,7 @@ void OccShapes::unbind(int dim, int tag, bool recursive) {
   tags[dim].UnBind(shape);
   byTag[dim].erase(found);
   extrusions.erase({dim, tag});
+  constraints.erase({dim, tag});
   if (!recursive) return;
   for (int sub = dim - 1; sub >= 0; --sub)
     for (TopExp_Explorer it(shape, kShapeTypes[sub]); it.More(); it.Next())
@@ -103,6 +104,7 @@ void OccShapes::unbind(int dim, int tag, bool recursive) {
         tags[sub].UnBind(it.Current());
         byTag[sub].erase(subTag);
         extrusions.erase({sub, subTag});
+        constraints.erase({sub, subTag});
       }
 }
 

@@ -6,6 +6,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,14 @@ struct OccShapes {
   std::map<int, TopoDS_Shape> shells;
   // Extruded entities: how they were swept (forgotten when the entity goes).
   std::map<EntityId, ExtrusionRecord> extrusions;
+  // Mesh constraints on entities: periodicity, embedded entities, compounds (forgotten when
+  // the entity goes).
+  struct Constraints {
+    std::optional<Periodicity> periodic = std::nullopt;
+    std::vector<int> embedded[3] = {};  // points, curves, surfaces inside the entity
+    std::vector<int> compound = {};
+  };
+  std::map<EntityId, Constraints> constraints;
 
   bool isBound(int dim, const TopoDS_Shape& s) const { return tags[dim].IsBound(s); }
   bool contains(int dim, int tag) const {
@@ -55,6 +64,10 @@ struct OccShapes {
 // Runs `build`, turning an OpenCASCADE failure into a GeometryError "what: reason".
 template <class Build>
 decltype(auto) guarded(const std::string& what, Build build);
+
+// Puts the periodicity, embedding and compounds recorded on the shapes into the model's copies
+// of their entities (kernel/occ/occ_constraints.cpp).
+void applyConstraints(const OccShapes& shapes, Model& model);
 
 // The dimension of a vertex, edge, face or solid; -1 for another kind of shape.
 int shapeDimension(const TopoDS_Shape& s);
