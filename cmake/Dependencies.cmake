@@ -46,17 +46,15 @@ find_path(OCC_ALIASED_ARRAY_DIR NCollection_AliasedArray.hxx PATHS ${OCC_INCLUDE
 geomesh_require(OCC_ALIASED_ARRAY_DIR "the OpenCASCADE header NCollection_AliasedArray.hxx"
                 "libocct-visualization-dev")
 set(GEOMESH_OCC_LIBS TKernel TKMath TKG2d TKG3d TKGeomBase TKBRep TKGeomAlgo TKTopAlgo TKPrim
-                     TKBO TKBool TKFillet TKOffset TKShHealing TKXSBase TKSTEPBase TKSTEPAttr
-                     TKSTEP209 TKSTEP TKIGES)
+                     TKBO TKBool TKFillet TKOffset TKShHealing TKXSBase TKSTEP TKIGES)
 set(GEOMESH_OCC_PACKAGES
     TKernel=libocct-foundation-dev TKMath=libocct-foundation-dev
     TKPrim=libocct-modeling-algorithms-dev TKBO=libocct-modeling-algorithms-dev
     TKBool=libocct-modeling-algorithms-dev TKFillet=libocct-modeling-algorithms-dev
     TKOffset=libocct-modeling-algorithms-dev TKShHealing=libocct-modeling-algorithms-dev
     TKTopAlgo=libocct-modeling-algorithms-dev TKGeomAlgo=libocct-modeling-algorithms-dev
-    TKXSBase=libocct-data-exchange-dev TKSTEPBase=libocct-data-exchange-dev
-    TKSTEPAttr=libocct-data-exchange-dev TKSTEP209=libocct-data-exchange-dev
-    TKSTEP=libocct-data-exchange-dev TKIGES=libocct-data-exchange-dev)
+    TKXSBase=libocct-data-exchange-dev TKSTEP=libocct-data-exchange-dev
+    TKIGES=libocct-data-exchange-dev)
 add_library(geomesh_occ INTERFACE)
 target_include_directories(geomesh_occ SYSTEM INTERFACE ${OCC_INCLUDE_DIR})
 foreach(lib ${GEOMESH_OCC_LIBS})

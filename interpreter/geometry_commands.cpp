@@ -162,6 +162,7 @@ void Interpreter::reportHandover(const UnsupportedOperation& unsupported) {
 // OpenCASCADE {x, y, z, r} circle) are not supported by the built-in kernel.
 void Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where) {
   if (!isDefinition(command)) return unsupportedStatement(command, where);
+  if (defineConic(command, where)) return;  // OpenCASCADE's {x, y, z, r <, a1, a2>}
   const int tag = entityTag(command, where);
   if (evaluateNumbers(*command.value).size() != 3) return unsupportedStatement(command, where);
   const std::vector<int> points = entityTags(*command.value);

@@ -195,46 +195,21 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   session_.log().info("Wrote '" + shown + "'");
 }
 
-namespace {
-
-bool isCadExtension(const std::string& ext) {
-  return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep" ||
-         ext == ".brp";
-}
-
-}  // namespace
-
-std::vector<EntityId> Interpreter::importShapes(const ast::Expr& name) {
-  std::filesystem::path path = evaluateString(name);
-  if (path.is_relative()) path = std::filesystem::path(directoryOf(name.loc.file)) / path;
-  const std::string shown = path.lexically_normal().string();
-  try {
-    std::vector<EntityId> shapes = session_.factories().importShapes(shown);
-    session_.log().info("Imported '" + shown + "': " + std::to_string(shapes.size()) +
-                        " top-level entities");
-    return shapes;
-  } catch (const GeometryError& error) {
-    fail(name.loc, error.what());
-  }
-}
-
 // Merge "file.geo"; reads the script as Include does (so do .opt and .geo_unrolled files,
 // which are scripts too). Merge "file.msh"; reads a mesh, as long as the script has no
-// geometry of its own. Merge "part.step" (or .stp, .iges, .igs, .brep, .brp) adds the CAD
-// file's shapes to the OpenCASCADE factory; other files are not merged.
+// geometry of its own; other files are not merged.
 void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocation& where) {
   const ast::Expr& name = *command.args[0];
   const std::string file = evaluateString(name);
   const std::string ext = extensionOf(file);
   if (ext == ".geo" || ext == ".opt" || ext == ".geo_unrolled")
     return executeInclude(command, where);
-  if (isCadExtension(ext)) {
-    importShapes(name);
-    return;
-  }
+  if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep" ||
+      ext == ".brp")
+    return mergeCadFile(file, where);
   if (ext != ".msh") {
     warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo, .opt, " +
-                    ".geo_unrolled, .msh, .step, .iges and .brep); ignored");
+                    ".geo_unrolled and .msh); ignored");
     return;
   }
   if (session_.hasGeometry() || session_.meshFromFile()) {

@@ -21,6 +21,7 @@
 namespace geomesh {
 
 class Session;
+class SolidModeling;
 
 // Walks the AST of a script and its Includes, keeping the variables, macros and source texts
 // of one run. The member functions are spread over files by concern: statements
@@ -123,6 +124,25 @@ class Interpreter {
   void reportHandover(const UnsupportedOperation& unsupported);
   int physicalTagFor(int dim, const std::string& name) const;
   void defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where);
+  // OpenCASCADE statements (occ_statements.cpp)
+  SolidModeling* solidModeling(const std::string& statement, const SourceLocation& where);
+  int solidTag(const ast::CommandStmt& command, const SourceLocation& where);
+  void definePrimitive(const ast::CommandStmt& command, const SourceLocation& where);
+  bool defineConic(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineEllipse(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineWire(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineThruSections(const ast::CommandStmt& command, const SourceLocation& where);
+  std::vector<EntityId> booleanArguments(const ast::ShapePart& block, bool& remove);
+  std::vector<EntityId> booleanShapes(const std::string& word,
+                                      const std::vector<ast::ShapePart>& parts, int tag,
+                                      const SourceLocation& where);
+  void executeBoolean(const ast::CommandStmt& command, const SourceLocation& where);
+  std::vector<EntityId> roundedShapes(const ast::Expr& shape);
+  void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
+  std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
+  std::vector<EntityId> closestShapes(const ast::Expr& shape);
+  std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
+  void mergeCadFile(const std::string& file, const SourceLocation& where);
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
@@ -164,9 +184,6 @@ class Interpreter {
   std::optional<double> modelStatistic(std::string_view name);
   void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
-  // The shapes of the CAD file `name` names (relative to the script), added to the
-  // OpenCASCADE factory; fails at `name` when it cannot be read.
-  std::vector<EntityId> importShapes(const ast::Expr& name);
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);
 
   // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)

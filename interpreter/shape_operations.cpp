@@ -160,6 +160,7 @@ std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr
       return shapes;
     }
     if (kind == "Extrude" && shape.parts.size() == 2) return extrude(shape);
+    if (auto made = solidOperation(shape)) return made;
   } catch (const GeometryError& error) {
     fail(shape.loc, error.what());
   }
@@ -337,8 +338,6 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
       expr.parts.size() == 1 && !expr.parts[0].isBlock)
     return physicalQuery(expr, entityDimension({w[1]}));
   if (auto shapes = shapeOperation(expr)) return Value::list(asDoubles(tagsOf(*shapes)));
-  if (w == Words{"ShapeFromFile"} && expr.parts.size() == 1 && expr.parts[0].items.size() == 1)
-    return Value::list(asDoubles(tagsOf(importShapes(*expr.parts[0].items[0]))));
   warn(expr.loc, "'" + (w.empty() ? std::string("{..}") : w[0]) +
                      "' is not supported yet; gives an empty list");
   return Value::list({});

@@ -30,12 +30,10 @@ bool FactorySelection::select(const std::string& name) {
   return false;
 }
 
+SolidModeling& FactorySelection::solidModeler() { return factories_->occ; }
+
 void FactorySelection::onHandover(FallbackFactory::Handover handover) {
   factories_->occFirst.onHandover(std::move(handover));
-}
-
-std::vector<EntityId> FactorySelection::importShapes(const std::string& path) {
-  return factories_->occ.importShapes(path);
 }
 
 // The built-in factory goes last: its physical groups may name OpenCASCADE entities.

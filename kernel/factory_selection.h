@@ -3,7 +3,6 @@
 
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "kernel/fallback_factory.h"
 
@@ -20,15 +19,13 @@ class FactorySelection {
   FactorySelection& operator=(const FactorySelection&) = delete;
 
   GeometryFactory& current() { return *current_; }
+  // The OpenCASCADE factory's solid modeling, whichever factory is selected (Merge "x.step").
+  SolidModeling& solidModeler();
   const GeometryFactory& current() const { return *current_; }
   // "OpenCASCADE"; "Built-in" (or "built-in", "Geo"). False for another name (nothing changes).
   bool select(const std::string& name);
   // Told of every operation the selected factory hands over to the built-in one.
   void onHandover(FallbackFactory::Handover handover);
-
-  // The shapes of a BREP, STEP or IGES file, added to the OpenCASCADE factory whichever is
-  // selected (see OccFactory::importShapes); returns the top-level entities.
-  std::vector<EntityId> importShapes(const std::string& path);
 
   // Clears the model's entities, then adds those of every factory.
   void synchronize(Model& model) const;

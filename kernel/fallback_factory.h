@@ -22,6 +22,7 @@ class FallbackFactory final : public GeometryFactory {
   void onHandover(Handover handover) { handover_ = std::move(handover); }
 
   std::string name() const override { return primary_.name(); }
+  SolidModeling* solidModeling() override { return primary_.solidModeling(); }
 
   void addPoint(int tag, Vec3 xyz, double meshSize) override;
   void addLine(int tag, int startPoint, int endPoint) override;

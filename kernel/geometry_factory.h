@@ -10,6 +10,7 @@
 #include "kernel/extrusion_motion.h"
 #include "kernel/geometry_error.h"
 #include "kernel/model.h"
+#include "kernel/solid_modeling.h"
 #include "kernel/unrolled_geo_hooks.h"
 
 namespace geomesh {
@@ -25,6 +26,9 @@ class GeometryFactory {
 
   // "Built-in", "OpenCASCADE": how scripts name the factory in SetFactory.
   virtual std::string name() const = 0;
+  // The solid modeler's operations (primitives, Booleans, ...), or null when the factory has
+  // none (the built-in one).
+  virtual SolidModeling* solidModeling() { return nullptr; }
 
   // Entities. Tags are the script's; reusing one throws GeometryError.
   virtual void addPoint(int tag, Vec3 xyz, double meshSize);

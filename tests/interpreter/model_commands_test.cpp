@@ -308,7 +308,7 @@ TEST_F(ModelCommands, IncludeAndListFromFileReadOnlyRegularFiles) {
 namespace geomesh::testing {
 namespace {
 
-// CAD files: Merge and ShapeFromFile add their shapes to the OpenCASCADE factory.
+// A CAD file merged by a script meshes: its cylindrical bore closes on a seam.
 class CadImport : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -325,36 +325,15 @@ class CadImport : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(CadImport, MergeStepAddsItsEntitiesWhicheverFactoryIsSelected) {
+TEST_F(CadImport, MergedStepPartMeshesToItsArea) {
   ScriptRun run;
   runMain(run, "Merge \"part.step\";\nMesh.MeshSizeMax = 0.1;\nMesh 2;\n");
   EXPECT_TRUE(run.log.warnings.empty());
   const Model& model = run.session.model();
   EXPECT_EQ(model.volumes().size(), 1u);
   EXPECT_EQ(model.surfaces().size(), 7u);
-  EXPECT_NEAR(triangleArea(run.session.mesh()), 2 * (4 - 0.16 * std::numbers::pi) + 4 + 0.4 * std::numbers::pi, 0.02);
-}
-
-TEST_F(CadImport, ShapeFromFileGivesTheTopLevelTags) {
-  ScriptRun run;
-  EXPECT_EQ(runMain(run, R"(
-SetFactory("OpenCASCADE");
-Box(1) = {5, 5, 5, 1, 1, 1};
-v() = ShapeFromFile("part.step");
-Printf("%g: %g", #v(), v(0));
-)"),
-            "1: 2\n");
-}
-
-TEST_F(CadImport, MissingFileFailsAtTheStatementNamingThePath) {
-  ScriptRun run;
-  try {
-    runMain(run, "x = 1;\nMerge \"absent.stp\";\n");
-    FAIL() << "no error";
-  } catch (const ScriptError& error) {
-    EXPECT_EQ(error.location().line, 2);
-    EXPECT_NE(error.message().find("absent.stp"), std::string::npos) << error.message();
-  }
+  const double pi = std::numbers::pi;
+  EXPECT_NEAR(triangleArea(run.session.mesh()), 2 * (4 - 0.16 * pi) + 4 + 0.4 * pi, 0.02);
 }
 
 }  // namespace

@@ -1,0 +1,96 @@
+// The OpenCASCADE factory's surfaces, surface loops and volumes built from their boundaries.
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepOffsetAPI_MakeFilling.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <ShapeFix_Face.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <cmath>
+#include <string>
+
+#include "kernel/geometry_error.h"
+#include "kernel/occ/occ_factory.h"
+#include "kernel/occ/occ_shapes.h"
+
+namespace geomesh {
+
+void OccFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
+  tag = primitiveTag(2, tag, "Plane Surface");
+  const std::string what = "Plane Surface " + std::to_string(tag);
+  if (curveLoops.empty()) throw GeometryError(what + " has no curve loop");
+  std::vector<TopoDS_Wire> wires;
+  for (int loop : curveLoops) wires.push_back(TopoDS::Wire(shapes_->findWire(std::abs(loop))));
+  const TopoDS_Shape face = guarded(what, [&] {
+    BRepBuilderAPI_MakeFace maker(wires.front(), true);
+    if (!maker.IsDone())
+      throw GeometryError(what + ": its outer loop " + std::to_string(std::abs(curveLoops[0])) +
+                          " is not planar");
+    for (std::size_t i = 1; i < wires.size(); ++i) maker.Add(wires[i]);
+    // Holes may come in either orientation: the fix turns them against the outer loop.
+    ShapeFix_Face fix(maker.Face());
+    fix.FixOrientation();
+    fix.Perform();
+    return fix.Face();
+  });
+  shapes_->bindTree(2, tag, face);
+}
+
+// A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them.
+void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops) {
+  tag = primitiveTag(2, tag, "Surface");
+  const std::string what = "Surface " + std::to_string(tag);
+  if (curveLoops.size() != 1) throw GeometryError(what + ": a filling takes one curve loop");
+  const TopoDS_Shape& wire = shapes_->findWire(std::abs(curveLoops[0]));
+  const TopoDS_Shape face = guarded(what, [&] {
+    BRepOffsetAPI_MakeFilling filling;
+    for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())
+      filling.Add(TopoDS::Edge(it.Current()), GeomAbs_C0, true);
+    filling.Build();
+    if (!filling.IsDone()) throw GeometryError(what + ": no surface fills this loop");
+    return filling.Shape();
+  });
+  shapes_->bindTree(2, tag, face);
+}
+
+void OccFactory::addSurfaceLoop(int tag, std::vector<int> surfaces) {
+  if (tag < 0) tag = maxTag(kSurfaceLoop) + 1;
+  const std::string what = "Surface Loop " + std::to_string(tag);
+  if (shapes_->shells.contains(tag)) throw GeometryError(what + " already exists");
+  if (surfaces.empty()) throw GeometryError(what + " has no surface");
+  TopoDS_Shell shell;
+  BRep_Builder builder;
+  builder.MakeShell(shell);
+  for (int s : surfaces) builder.Add(shell, shapes_->find(2, std::abs(s)));
+  shell.Closed(BRep_Tool::IsClosed(shell));
+  if (!shell.Closed()) throw GeometryError(what + " is not closed");
+  shapes_->shells[tag] = shell;
+}
+
+void OccFactory::addVolume(int tag, std::vector<int> surfaceLoops) {
+  tag = primitiveTag(3, tag, "Volume");
+  const std::string what = "Volume " + std::to_string(tag);
+  if (surfaceLoops.empty()) throw GeometryError(what + " has no surface loop");
+  const TopoDS_Shape solid = guarded(what, [&] {
+    BRepBuilderAPI_MakeSolid maker;
+    for (int loop : surfaceLoops) maker.Add(TopoDS::Shell(shapes_->findShell(std::abs(loop))));
+    if (!maker.IsDone()) throw GeometryError(what + ": its surface loops make no solid");
+    // Orients the shells: the outer one outwards, the others (cavities) inwards.
+    ShapeFix_Solid fix(maker.Solid());
+    fix.Perform();
+    TopExp_Explorer it(fix.Solid(), TopAbs_SOLID);
+    if (!it.More()) throw GeometryError(what + ": its surface loops make no solid");
+    return it.Current();
+  });
+  shapes_->bindTree(3, tag, solid);
+}
+
+}  // namespace geomesh

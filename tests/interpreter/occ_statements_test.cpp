@@ -1,0 +1,108 @@
+// OpenCASCADE statements in scripts: primitives, Booleans (as statements and as values),
+// lofts, fillets, CAD files; their errors point at the statement and give the reason.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "kernel/occ/occ_factory.h"
+#include "script_runner.h"
+#include "tests/scratch.h"
+
+namespace geomesh::testing {
+namespace {
+
+const std::string kOcc = "SetFactory(\"OpenCASCADE\");\n";
+
+TEST(OccStatements, PrimitivesTakeTheirOptionalArguments) {
+  ScriptRun run;
+  run.run(kOcc +
+          "Sphere(1) = {0, 0, 0, 1, 0, Pi/2, Pi};\nCylinder(2) = {3, 0, 0, 0, 0, 1, 0.5, Pi};\n"
+          "Cone(3) = {6, 0, 0, 0, 0, 1, 1, 0};\nTorus(4) = {9, 0, 0, 1, 0.2};\n"
+          "Wedge(5) = {12, 0, 0, 1, 1, 1, 0.5};\nRectangle(100) = {0, 5, 0, 2, 1, 0.2};\n"
+          "Disk(101) = {5, 5, 0, 1, 0.5};\nDisk(102) = {8, 5, 0, 1};\n"
+          "Circle(200) = {0, 9, 0, 1, 0, Pi/2};\nEllipse(201) = {3, 9, 0, 2, 1};\n"
+          "v() = Volume{:}; s() = Surface{:};\nPrintf(\"%g %g\", #v(), s(#s() - 1));\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  EXPECT_EQ(run.out.str(), "5 102\n");
+}
+
+TEST(OccStatements, BooleansAsStatementsAndValues) {
+  EXPECT_EQ(printed(kOcc +
+                    "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0.5, 0.5, 0.5, 1, 1, 1};\n"
+                    "BooleanDifference(3) = { Volume{1}; Delete; }{ Volume{2}; Delete; };\n"
+                    "v() = Volume{:};\nPrintf(\"%g %g\", #v(), v(0));\n"
+                    "Box(4) = {5, 0, 0, 1, 1, 1};\nSphere(5) = {5.5, 0.5, 1, 0.3};\n"
+                    "r() = BooleanFragments{ Volume{4}; Delete; }{ Volume{5}; Delete; };\n"
+                    "Printf(\"%g %g %g %g\", #r(), r(0), r(1), r(2));\n"
+                    "BooleanUnion{ Volume{r(0)}; Delete; }{ Volume{r(1)}; Delete; }\n"
+                    "v() = Volume{:};\nPrintf(\"%g\", #v());\n"),
+            "1 3\n3 4 5 6\n3\n");
+}
+
+TEST(OccStatements, LoftsFilletsAndWires) {
+  ScriptRun run;
+  run.run(kOcc +
+          "Circle(1) = {0, 0, 0, 0.5};\nCurve Loop(1) = 1;\nCircle(2) = {0, 0, 1, 0.3};\n"
+          "Curve Loop(2) = 2;\nThruSections(1) = {1, 2};\n"
+          "Circle(11) = {3, 0, 0, 0.5};\nWire(11) = {11};\nCircle(12) = {3, 0, 1, 0.3};\n"
+          "Wire(12) = {12};\nRuled ThruSections(11) = {11, 12};\n"
+          "Box(20) = {6, 0, 0, 1, 1, 1};\nf() = Boundary{Volume{20};};\n"
+          "e() = Boundary{Surface{f(0)};};\nr() = Fillet{20}{e(0)}{0.1};\n"
+          "Chamfer{r(0)}{e(2)}{f(0)}{0.05}\n"
+          "v() = Volume{:};\nPrintf(\"%g %g %g %g\", #v(), v(0), v(1), r(0));\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  EXPECT_EQ(run.out.str(), "3 1 11 12\n");  // as the reference numbers them
+}
+
+TEST(OccStatements, ShapeFromFileAndMerge) {
+  const std::filesystem::path part = scratch::path("occ-statements-part.brep");
+  OccFactory maker;
+  maker.addBox(1, {0, 0, 0}, {1, 2, 3});
+  maker.exportShapes(part.string());
+  EXPECT_EQ(printed(kOcc + "Box(1) = {5, 0, 0, 1, 1, 1};\nv() = ShapeFromFile(\"" +
+                    part.string() + "\");\nb() = BoundingBox Volume{v(0)};\n"
+                    "Printf(\"%g %g %.3g\", #v(), v(0), b(5));\n"),
+            "1 2 3\n");
+  ScriptRun run;  // Merge reads into the OpenCASCADE model, whichever factory is selected
+  run.run("Point(100) = {9, 9, 9};\nMerge \"" + part.string() + "\";\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  run.session.synchronize();
+  EXPECT_EQ(run.session.model().volumes().size(), 1u);
+  EXPECT_EQ(run.session.model().points().size(), 9u);
+  std::filesystem::remove(part);
+}
+
+TEST(OccStatements, ErrorsPointAtTheStatementWithTheReason) {
+  EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                               "BooleanUnion{ Volume{1}; Delete; }{ Volume{7}; Delete; }\n"),
+            "test.geo:3:1: error: Volume 7 is not defined");
+  EXPECT_EQ(firstLineOf(kOcc + "Sphere(1) = {0, 0, 0};"),
+            "test.geo:2:13: error: Sphere takes {x, y, z, r <, polar angle min, polar angle "
+            "max> <, opening>}, not 3 values");
+  EXPECT_EQ(firstLineOf(kOcc + "Disk(1) = {0, 0, 0, 1, 2};"),
+            "test.geo:2:1: error: Disk 1: its radius along x must not be smaller than the one "
+            "along y");
+  const std::string fillet = firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                                                "r() = Fillet{1}{1}{1.5};\n");
+  EXPECT_EQ(fillet.substr(0, 22), "test.geo:3:7: error: F") << fillet;
+  EXPECT_NE(fillet.find("Fillet"), std::string::npos) << fillet;
+  const std::string missing = firstLineOf(kOcc + "v() = ShapeFromFile(\"/no/such/part.step\");");
+  EXPECT_NE(missing.find("/no/such/part.step"), std::string::npos) << missing;
+  EXPECT_EQ(firstLineOf(kOcc + "BooleanFragments(9) = { Volume{1}; }{ Volume{2}; };\n"),
+            "test.geo:2:1: error: Volume 1 is not defined");
+}
+
+TEST(OccStatements, BuiltInEntitiesAreRefusedByOpenCascadeOperations) {
+  const std::string message =
+      firstLineOf("Point(100) = {0, 0, 0};\nSetFactory(\"OpenCASCADE\");\n"
+                  "Box(1) = {0, 0, 0, 1, 1, 1};\nBooleanUnion{ Volume{1}; }{ Point{100}; }\n");
+  EXPECT_EQ(message, "test.geo:4:1: error: BooleanUnion: Point 100 was made by the built-in "
+                     "kernel; OpenCASCADE operations take OpenCASCADE entities only");
+  EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nPoint(100) = {0, 0, 0};\n"
+                               "BooleanUnion{ Volume{1}; }{ Point{100}; }\n"),
+            "test.geo:4:1: error: BooleanUnion failed: this operation is not defined for shapes "
+            "of these dimensions (a union of a volume and a point, say)");
+}
+
+}  // namespace
+}  // namespace geomesh::testing

@@ -1,0 +1,71 @@
+// The OpenCASCADE factory's extrusions and revolutions: shapes, records and tags.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "kernel/geometry_error.h"
+#include "kernel/occ/occ_factory.h"
+
+namespace geomesh {
+namespace {
+
+std::vector<int> tagList(const std::vector<EntityId>& shapes) {
+  std::vector<int> tags;
+  for (const EntityId& e : shapes) tags.push_back(e.tag);
+  return tags;
+}
+
+// Extrusions list, for each shape, its top, the swept entity and the lateral ones, with the
+// tags the reference gives.
+TEST(OccExtrude, PrismsOfSurfaces) {
+  OccFactory occ;
+  occ.addRectangle(1, {0, 0, 0}, 2, 1);
+  occ.addDisk(2, {5, 0, 0}, 1, 1);
+  const std::vector<EntityId> r =
+      occ.extrude({{2, 1}, {2, 2}}, ExtrusionMotion::translate({0, 0, 1}), {});
+  EXPECT_EQ(tagList(r), (std::vector<int>{7, 1, 3, 4, 5, 6, 9, 2, 8}));
+  EXPECT_EQ(r[1], (EntityId{3, 1}));
+  EXPECT_NEAR(occ.volume(1), 2, 1e-9);
+  EXPECT_NEAR(occ.volume(2), std::numbers::pi, 1e-9);
+  EXPECT_EQ(occ.maxTag(1), 15);
+}
+
+TEST(OccExtrude, CurveThenSurfaceThenRevolution) {
+  OccFactory occ;
+  occ.addPoint(1, {0, 0, 0}, 0);
+  occ.addPoint(2, {1, 0, 0}, 0);
+  occ.addLine(1, 1, 2);
+  ExtrusionLayers layers;
+  layers.elements = {4};
+  layers.heights = {1};
+  std::vector<EntityId> r = occ.extrude({{1, 1}}, ExtrusionMotion::translate({0, 1, 0}), layers);
+  EXPECT_EQ(tagList(r), (std::vector<int>{4, 1, 2, 3}));
+  r = occ.extrude({{2, 1}}, ExtrusionMotion::translate({0, 0, 1}), {});
+  EXPECT_EQ(tagList(r), (std::vector<int>{6, 1, 2, 3, 4, 5}));
+  const auto quarterTurn = ExtrusionMotion::rotate({0, 0, 1}, {0, 0, 0}, std::numbers::pi / 2);
+  r = occ.extrude({{0, 2}}, quarterTurn, {});
+  EXPECT_EQ(r, (std::vector<EntityId>{{0, 9}, {1, 13}}));
+  EXPECT_NEAR(occ.length(13), std::numbers::pi / 2, 1e-9);
+  Model model;
+  occ.synchronize(model);
+  ASSERT_TRUE(model.surface(1)->extrusion.has_value());
+  EXPECT_EQ(model.surface(1)->extrusion->source, 1);
+  EXPECT_EQ(model.surface(1)->extrusion->top, 4);
+  EXPECT_EQ(model.surface(1)->extrusion->layers.elements, (std::vector<int>{4}));
+  EXPECT_FALSE(model.volume(1)->extrusion->layers.elements.size());
+}
+
+TEST(OccExtrude, RevolvedSurfaces) {
+  OccFactory occ;
+  occ.addRectangle(1, {1, 0, 0}, 1, 1);
+  const auto quarter = ExtrusionMotion::rotate({0, 1, 0}, {0, 0, 0}, std::numbers::pi / 2);
+  const std::vector<EntityId> r = occ.extrude({{2, 1}}, quarter, {});
+  EXPECT_EQ(r.size(), 6u);
+  EXPECT_NEAR(occ.volume(r[1].tag), std::numbers::pi / 2 * (4 - 1) / 2, 1e-9);
+  EXPECT_THROW(occ.extrude({{2, 1}}, ExtrusionMotion::twist({0, 0, 1}, {0, 0, 1}, {}, 1), {}),
+               GeometryError);
+  EXPECT_THROW(occ.extrude({{3, 1}}, ExtrusionMotion::translate({0, 0, 1}), {}), GeometryError);
+}
+
+}  // namespace
+}  // namespace geomesh
