@@ -44,12 +44,28 @@ struct SurfaceInput {
     points.push_back(k);
     return k;
   }
-  void addChain(const std::vector<NodeIndex>& chain, const std::vector<std::optional<Vec2>>& at,
-                int curve, EdgeKind kind) {
-    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
-      segments.push_back({local(chain[k], at[k]), local(chain[k + 1], at[k + 1]), kind});
+  // Adds the chain's segments and returns its first and last points. `start` and `end`, when
+  // given, are the points where it meets the previous and the next curve of its loop: there,
+  // the curves' places in the parameter plane are one, even where their curves on the surface
+  // differ by the CAD model's tolerance.
+  std::pair<std::uint32_t, std::uint32_t> addChain(const std::vector<NodeIndex>& chain,
+                                                   const std::vector<std::optional<Vec2>>& at,
+                                                   int curve, EdgeKind kind,
+                                                   std::optional<std::uint32_t> start = {},
+                                                   std::optional<std::uint32_t> end = {}) {
+    auto pointAt = [&](std::size_t k, std::optional<std::uint32_t> given) {
+      return given && nodes[*given] == chain[k] ? *given : local(chain[k], at[k]);
+    };
+    const std::uint32_t first = pointAt(0, start);
+    std::uint32_t previous = first;
+    for (std::size_t k = 1; k < chain.size(); ++k) {
+      const std::uint32_t next =
+          pointAt(k, k + 1 == chain.size() ? end : std::optional<std::uint32_t>());
+      segments.push_back({previous, next, kind});
       segmentCurve.push_back(curve);
+      previous = next;
     }
+    return {first, previous};
   }
 };
 
@@ -69,13 +85,31 @@ bool isDegenerate(const Model& model, int signedTag) {
   return curve && curve->geometry && curve->geometry->isDegenerate();
 }
 
-double meanSegmentLength(const SurfaceInput& in, const Mesh& mesh) {
+// A curve of a loop as its nodes and their places; a pole's places are the ends of its segment.
+struct LoopPiece {
+  int curve;  // signed
+  std::vector<NodeIndex> chain;
+  std::vector<std::optional<Vec2>> at;
+  bool pole;
+};
+
+LoopPiece loopPiece(const Model& model, const Mesh& mesh, const SurfaceGeometry& g, int curve) {
+  LoopPiece piece{curve, curveNodeChain(model, mesh, curve), {}, false};
+  piece.at = chainPlaces(model, mesh, g, curve, piece.chain.size());
+  piece.pole = isDegenerate(model, curve) && piece.at.front() && piece.at.back();
+  return piece;
+}
+
+// The mean length in space of the pieces' segments (poles have none).
+double meanSegmentLength(const std::vector<std::vector<LoopPiece>>& loops, const Mesh& mesh) {
   double total = 0;
   int count = 0;
-  for (const ConstrainedSegment& s : in.segments) {
-    const double length = distance(mesh.node(in.nodes[s.a]), mesh.node(in.nodes[s.b]));
-    if (length > 0) total += length, ++count;
-  }
+  for (const std::vector<LoopPiece>& loop : loops)
+    for (const LoopPiece& piece : loop)
+      for (std::size_t k = 0; k + 1 < piece.chain.size(); ++k) {
+        const double length = distance(mesh.node(piece.chain[k]), mesh.node(piece.chain[k + 1]));
+        if (length > 0) total += length, ++count;
+      }
   return count > 0 ? total / count : 0;
 }
 
@@ -111,8 +145,8 @@ void addPoleRing(SurfaceInput& in, const SurfaceGeometry& g, Vec2 a, Vec2 b, dou
 // A degenerate curve (a pole) is a segment of the parameter plane: it gets copies of its node,
 // fewer than its length at the parameter box centre would need at `size` (a quarter: more only
 // make thinner triangles at the pole), and a ring of free points around it.
-void addPole(SurfaceInput& in, const SurfaceGeometry& g, NodeIndex pole, Vec2 a, Vec2 b,
-             int curve, double size) {
+void expandPole(SurfaceInput& in, const SurfaceGeometry& g, LoopPiece& piece, double size) {
+  const Vec2 a = *piece.at.front(), b = *piece.at.back();
   const ParamBox box = g.bounds();
   const SurfaceDerivatives d =
       g.firstDerivatives({0.5 * (box.u.min + box.u.max), 0.5 * (box.v.min + box.v.max)});
@@ -120,14 +154,26 @@ void addPole(SurfaceInput& in, const SurfaceGeometry& g, NodeIndex pole, Vec2 a,
   constexpr double kMaxCopies = 10000;
   const int pieces =
       size > 0 ? static_cast<int>(std::clamp(std::ceil(length / size / 4), 1.0, kMaxCopies)) : 1;
-  std::vector<NodeIndex> chain(pieces + 1, pole);
-  std::vector<std::optional<Vec2>> at(pieces + 1);
+  piece.chain.assign(pieces + 1, piece.chain.front());
+  piece.at.resize(pieces + 1);
   for (int k = 0; k <= pieces; ++k) {
     const double f = static_cast<double>(k) / pieces;
-    at[k] = Vec2{a.u + f * (b.u - a.u), a.v + f * (b.v - a.v)};
+    piece.at[k] = Vec2{a.u + f * (b.u - a.u), a.v + f * (b.v - a.v)};
   }
-  in.addChain(chain, at, curve, EdgeKind::Boundary);
   addPoleRing(in, g, a, b, size);
+}
+
+// Each loop closes on itself: each curve starts at the point where the previous one ends.
+void addLoop(SurfaceInput& in, const std::vector<LoopPiece>& loop) {
+  std::optional<std::uint32_t> first, previous;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const LoopPiece& piece = loop[k];
+    const auto [start, end] =
+        in.addChain(piece.chain, piece.at, std::abs(piece.curve), EdgeKind::Boundary, previous,
+                    k + 1 == loop.size() ? first : std::nullopt);
+    if (!first) first = start;
+    previous = end;
+  }
 }
 
 SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
@@ -136,22 +182,20 @@ SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const
   const ParamBox box = g.bounds();
   in.tolerance = 1e-6 * std::hypot(box.u.max - box.u.min, box.v.max - box.v.min);
   if (!std::isfinite(in.tolerance)) in.tolerance = 0;
-  std::vector<std::pair<int, std::vector<std::optional<Vec2>>>> poles;
-  auto add = [&](int curve, EdgeKind kind) {
-    const std::vector<NodeIndex> chain = curveNodeChain(model, mesh, curve);
-    std::vector<std::optional<Vec2>> at = chainPlaces(model, mesh, g, curve, chain.size());
-    if (isDegenerate(model, curve) && at.front() && at.back())
-      poles.emplace_back(curve, std::move(at));
-    else
-      in.addChain(chain, at, std::abs(curve), kind);
-  };
-  for (const std::vector<int>& loop : surface.loops)
-    for (int curve : loop) add(curve, EdgeKind::Boundary);
-  for (int curve : surface.embeddedCurves) add(curve, EdgeKind::Embedded);
-  const double size = meanSegmentLength(in, mesh);
-  for (const auto& [curve, at] : poles)
-    addPole(in, g, curveNodeChain(model, mesh, curve).front(), *at.front(), *at.back(),
-            std::abs(curve), size);
+  std::vector<std::vector<LoopPiece>> loops;
+  for (const std::vector<int>& loop : surface.loops) {
+    loops.emplace_back();
+    for (int curve : loop) loops.back().push_back(loopPiece(model, mesh, g, curve));
+  }
+  const double size = meanSegmentLength(loops, mesh);
+  for (std::vector<LoopPiece>& loop : loops)
+    for (LoopPiece& piece : loop)
+      if (piece.pole) expandPole(in, g, piece, size);
+  for (const std::vector<LoopPiece>& loop : loops) addLoop(in, loop);
+  for (int curve : surface.embeddedCurves) {
+    const LoopPiece piece = loopPiece(model, mesh, g, curve);
+    in.addChain(piece.chain, piece.at, curve, EdgeKind::Embedded);
+  }
   for (int point : surface.embeddedPoints) in.local(pointNode(mesh, point));
   return in;
 }

@@ -9,6 +9,7 @@
 #include "kernel/occ/occ_factory.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/pipeline/generate.h"
+#include "mesh_test_models.h"
 #include "tests/occ_fixtures.h"
 
 namespace geomesh {
@@ -158,6 +159,38 @@ TEST(OccSurfaceMesh, PoleFanHasNoCollapsedTriangle) {
     for (NodeIndex p : poles) atPoles += (n[0] == p) + (n[1] == p) + (n[2] == p);
   }
   EXPECT_GE(atPoles, 12);  // at least six triangles around each pole
+}
+
+// The unit square, whose curves on the surface are off by the CAD model's tolerance (1e-4 times
+// the curve's tag along u): neighbouring curves of a loop do not quite meet in its parameters.
+class ToleranceOffPlane final : public SurfaceGeometry {
+ public:
+  explicit ToleranceOffPlane(const Model& model) : model_(model) {}
+  ParamBox bounds() const override { return {{0, 1}, {0, 1}}; }
+  Vec3 point(Vec2 uv) const override { return {uv.u, uv.v, 0}; }
+  SurfaceDerivatives firstDerivatives(Vec2) const override { return {{1, 0, 0}, {0, 1, 0}}; }
+  Vec2 project(Vec3 p) const override { return {p.x, p.y}; }
+  bool isPlane() const override { return true; }
+  std::optional<Vec2> curveParameters(int signedCurve, double t) const override {
+    const int tag = std::abs(signedCurve);
+    const Vec3 p = model_.curve(tag)->geometry->point(t);
+    return Vec2{p.x + 1e-4 * tag, p.y};
+  }
+
+ private:
+  const Model& model_;
+};
+
+TEST(OccSurfaceMesh, LoopsCloseWhereCurvesOnTheSurfaceMissEachOther) {
+  testing::PolygonModelBuilder b;
+  ModelSurface& surface = b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
+  surface.geometry = std::make_shared<ToleranceOffPlane>(b.model);
+  QuietSink log;
+  Mesh mesh;
+  generateMesh(b.model, {}, 2, mesh, log);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  EXPECT_NEAR(triangleArea(mesh), 1.0, 1e-3);
 }
 
 }  // namespace
