@@ -294,6 +294,22 @@ std::vector<EntityId> Interpreter::closestShapes(const ast::Expr& shape) {
   }
 }
 
+// Extrude{ Surface{..}; } Using Wire{w}: a pipe.
+std::vector<EntityId> Interpreter::extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire) {
+  if (shape.words != Words{"Extrude"} || shape.parts.size() != 1 || !shape.parts[0].isBlock)
+    fail(shape.loc, "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
+  const std::vector<EntityId> shapes = shapesIn(shape.parts[0]);
+  const std::vector<double> wires = shapeArguments(wire);
+  if (wires.size() != 1) fail(wire.loc, "Using Wire takes one wire, as in Using Wire{2}");
+  SolidModeling* solids = solidModeling("Extrude Using Wire", shape.loc);
+  if (!solids) return {};
+  try {
+    return solids->extrudeAlongWire(shapes, clampedInteger<int>(wires[0]));
+  } catch (const GeometryError& error) {
+    fail(shape.loc, error.what());
+  }
+}
+
 // The OpenCASCADE operations that give shapes as values; nullopt for the others.
 std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr& shape) {
   const std::string& word = shape.words[0];

@@ -141,6 +141,7 @@ class Interpreter {
   void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
   std::vector<EntityId> closestShapes(const ast::Expr& shape);
+  std::vector<EntityId> extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
   void mergeCadFile(const std::string& file, const SourceLocation& where);
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);

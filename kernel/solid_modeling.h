@@ -54,6 +54,10 @@ class SolidModeling {
   // Geometry.ToleranceBoolean.
   virtual void setBooleanTolerance(double tolerance) = 0;
 
+  // Extrude{shapes} Using Wire{w}: the entities the sweep along the wire makes.
+  virtual std::vector<EntityId> extrudeAlongWire(const std::vector<EntityId>& shapes,
+                                                 int wireTag) = 0;
+
   // (Ruled) ThruSections(tag) = {wires}; Fillet{volumes}{curves}{radii};
   // Chamfer{volumes}{curves}{surfaces}{distances}.
   virtual std::vector<EntityId> addThruSections(int tag, const std::vector<int>& wires,

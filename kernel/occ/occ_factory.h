@@ -129,6 +129,11 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag) override;
   void addCompound(int dim, const std::vector<int>& tags) override;
 
+  // Extrude{shapes} Using Wire{w}: the shapes swept along the wire (a pipe). Returns the
+  // volumes (or surfaces) the sweep made, new tags in OpenCASCADE's order.
+  std::vector<EntityId> extrudeAlongWire(const std::vector<EntityId>& shapes,
+                                         int wireTag) override;
+
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map) override;
   std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes) override;

@@ -54,6 +54,16 @@ TEST(OccStatements, LoftsFilletsAndWires) {
   EXPECT_EQ(run.out.str(), "3 1 11 12\n");  // as the reference numbers them
 }
 
+TEST(OccStatements, ExtrudeAlongAWire) {
+  ScriptRun run;
+  run.run(kOcc + "Point(1) = {0, 0, 0};\nPoint(2) = {0, 0, 2};\nLine(1) = {1, 2};\n"
+                 "Wire(1) = {1};\nDisk(1) = {0, 0, 0, 0.5};\n"
+                 "Extrude { Surface{1}; } Using Wire {1}\nv() = Volume{:};\n"
+                 "Printf(\"%g %g\", #v(), v(0));\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  EXPECT_EQ(run.out.str(), "1 1\n");
+}
+
 TEST(OccStatements, ShapeFromFileAndMerge) {
   const std::filesystem::path part = scratch::path("occ-statements-part.brep");
   OccFactory maker;
