@@ -334,6 +334,16 @@ void Interpreter::mergeCadFile(const std::string& file, const SourceLocation& wh
   }
 }
 
+// Save "part.brep" / "part.step": the OpenCASCADE model's shapes.
+void Interpreter::saveCadFile(const std::string& path, const SourceLocation& where) {
+  try {
+    session_.factories().solidModeler().exportShapes(path);
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+  session_.log().info("Wrote '" + path + "'");
+}
+
 void Interpreter::executeRounding(const ast::CommandStmt& command, const SourceLocation& where) {
   if (!command.shape) return unsupportedStatement(command, where);
   roundedShapes(*command.shape);

@@ -144,6 +144,7 @@ class Interpreter {
   std::vector<EntityId> extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
   void mergeCadFile(const std::string& file, const SourceLocation& where);
+  void saveCadFile(const std::string& path, const SourceLocation& where);
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);

@@ -82,6 +82,20 @@ TEST(OccStatements, ShapeFromFileAndMerge) {
   std::filesystem::remove(part);
 }
 
+TEST(OccStatements, SaveWritesWhatShapeFromFileReads) {
+  const std::filesystem::path step = scratch::path("occ-statements-saved.step");
+  ScriptRun writer;
+  writer.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nSphere(2) = {3, 0, 0, 1};\nSave \"" +
+             step.string() + "\";\n");
+  EXPECT_EQ(printed(kOcc + "v() = ShapeFromFile(\"" + step.string() +
+                    "\");\nPrintf(\"%g %g %g\", #v(), v(0), v(1));\n"),
+            "2 1 2\n");
+  std::filesystem::remove(step);
+  EXPECT_NE(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nSave \"/no/such/dir/x.brep\";\n")
+                .find("test.geo:3:1: error:"),
+            std::string::npos);
+}
+
 TEST(OccStatements, ErrorsPointAtTheStatementWithTheReason) {
   EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
                                "BooleanUnion{ Volume{1}; Delete; }{ Volume{7}; Delete; }\n"),
