@@ -218,11 +218,50 @@ std::vector<EntityId> Interpreter::booleanShapes(const std::string& word,
                         " was made by the built-in kernel; OpenCASCADE operations take "
                         "OpenCASCADE entities only");
   solids->setBooleanTolerance(session_.options().number("Geometry.ToleranceBoolean"));
+  std::vector<EntityId> result;
   try {
-    return solids->boolean(booleanOperation(word), objects, tools, deleteObjects, deleteTools,
-                           tag);
+    result = solids->boolean(booleanOperation(word), objects, tools, deleteObjects, deleteTools,
+                             tag);
   } catch (const GeometryError& error) {
     fail(where, error.what());
+  }
+  reportReplacements(word, solids->lastReplacements(), where);
+  return result;
+}
+
+namespace {
+
+std::string entityList(const std::vector<EntityId>& entities) {
+  std::string text;
+  for (const EntityId& e : entities)
+    text += (text.empty() ? "" : ", ") + std::string(kEntityKinds[e.dim]) + " " +
+            std::to_string(e.tag);
+  return text;
+}
+
+}  // namespace
+
+// Logs what a Boolean made of each input it deleted (-v 4), and warns of each physical group
+// that names an input now gone or renumbered: the reference renumbers silently.
+void Interpreter::reportReplacements(const std::string& word,
+                                     const std::vector<SolidModeling::Replacement>& replaced,
+                                     const SourceLocation& where) {
+  for (const SolidModeling::Replacement& r : replaced) {
+    const std::string input = entityList({r.input});
+    const std::string images = r.images.empty() ? "nothing" : entityList(r.images);
+    session_.log().info(word + " (" + where.file + ":" + std::to_string(where.line) + "): " +
+                        input + " -> " + images);
+    if (r.images.size() == 1 && r.images[0] == r.input) continue;
+    for (const auto& [id, group] : session_.factory().physicalGroups()) {
+      if (id.dim != r.input.dim ||
+          std::find(group.entities.begin(), group.entities.end(), r.input.tag) ==
+              group.entities.end())
+        continue;
+      warn(where, "Physical " + std::string(kEntityKinds[id.dim]) + " " + std::to_string(id.tag) +
+                      (group.name.empty() ? "" : " (\"" + group.name + "\")") + " names " +
+                      input + ", which " + word +
+                      (r.images.empty() ? " deleted" : " replaced by " + images));
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 // lofts, fillets, CAD files; their errors point at the statement and give the reason.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "kernel/occ/occ_factory.h"
@@ -62,6 +63,29 @@ TEST(OccStatements, ExtrudeAlongAWire) {
                  "Printf(\"%g %g\", #v(), v(0));\n");
   EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
   EXPECT_EQ(run.out.str(), "1 1\n");
+}
+
+// Beyond the reference, which renumbers silently: a physical group naming an entity a Boolean
+// replaced gets a warning at the Boolean, and each replacement is logged.
+TEST(OccStatements, PhysicalGroupsOfReplacedEntitiesAreWarnedOf) {
+  ScriptRun run;
+  run.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0.5, 0.5, 0.5, 1, 1, 1};\n"
+                 "Box(5) = {5, 0, 0, 1, 1, 1};\nPhysical Volume(\"block\", 7) = {1, 5};\n"
+                 "BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; }\n"
+                 "Box(9) = {9, 0, 0, 1, 1, 1};\nPhysical Volume(8) = {9};\n"
+                 "BooleanDifference{ Volume{9}; Delete; }{ Volume{6}; Delete; }\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_EQ(run.log.warnings[0],
+            "test.geo:6:1: warning: Physical Volume 7 (\"block\") names Volume 1, which "
+            "BooleanFragments replaced by Volume 6, Volume 7");
+  ASSERT_GE(run.log.infos.size(), 2u);
+  EXPECT_NE(std::find(run.log.infos.begin(), run.log.infos.end(),
+                      "BooleanFragments (test.geo:6): Volume 2 -> Volume 7, Volume 8"),
+            run.log.infos.end());
+  // Volume 9 keeps its tag through the difference: nothing to warn of.
+  EXPECT_NE(std::find(run.log.infos.begin(), run.log.infos.end(),
+                      "BooleanDifference (test.geo:9): Volume 6 -> nothing"),
+            run.log.infos.end());
 }
 
 TEST(OccStatements, ShapeFromFileAndMerge) {
