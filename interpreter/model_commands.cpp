@@ -161,6 +161,7 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
                     "' skipped: this session writes no file");
     return;
   }
+  if (ext == ".brep" || ext == ".step" || ext == ".stp") return saveCadFile(shown, where);
   std::function<void(std::ostream&)> write;
   if (ext == ".msh") {
     // Nothing meshed yet: the file still lists the entities, as Gmsh's does.

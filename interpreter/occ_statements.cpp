@@ -218,11 +218,50 @@ std::vector<EntityId> Interpreter::booleanShapes(const std::string& word,
                         " was made by the built-in kernel; OpenCASCADE operations take "
                         "OpenCASCADE entities only");
   solids->setBooleanTolerance(session_.options().number("Geometry.ToleranceBoolean"));
+  std::vector<EntityId> result;
   try {
-    return solids->boolean(booleanOperation(word), objects, tools, deleteObjects, deleteTools,
-                           tag);
+    result = solids->boolean(booleanOperation(word), objects, tools, deleteObjects, deleteTools,
+                             tag);
   } catch (const GeometryError& error) {
     fail(where, error.what());
+  }
+  reportReplacements(word, solids->lastReplacements(), where);
+  return result;
+}
+
+namespace {
+
+std::string entityList(const std::vector<EntityId>& entities) {
+  std::string text;
+  for (const EntityId& e : entities)
+    text += (text.empty() ? "" : ", ") + std::string(kEntityKinds[e.dim]) + " " +
+            std::to_string(e.tag);
+  return text;
+}
+
+}  // namespace
+
+// Logs what a Boolean made of each input it deleted (-v 4), and warns of each physical group
+// that names an input now gone or renumbered: the reference renumbers silently.
+void Interpreter::reportReplacements(const std::string& word,
+                                     const std::vector<SolidModeling::Replacement>& replaced,
+                                     const SourceLocation& where) {
+  for (const SolidModeling::Replacement& r : replaced) {
+    const std::string input = entityList({r.input});
+    const std::string images = r.images.empty() ? "nothing" : entityList(r.images);
+    session_.log().info(word + " (" + where.file + ":" + std::to_string(where.line) + "): " +
+                        input + " -> " + images);
+    if (r.images.size() == 1 && r.images[0] == r.input) continue;
+    for (const auto& [id, group] : session_.factory().physicalGroups()) {
+      if (id.dim != r.input.dim ||
+          std::find(group.entities.begin(), group.entities.end(), r.input.tag) ==
+              group.entities.end())
+        continue;
+      warn(where, "Physical " + std::string(kEntityKinds[id.dim]) + " " + std::to_string(id.tag) +
+                      (group.name.empty() ? "" : " (\"" + group.name + "\")") + " names " +
+                      input + ", which " + word +
+                      (r.images.empty() ? " deleted" : " replaced by " + images));
+    }
   }
 }
 
@@ -294,6 +333,22 @@ std::vector<EntityId> Interpreter::closestShapes(const ast::Expr& shape) {
   }
 }
 
+// Extrude{ Surface{..}; } Using Wire{w}: a pipe.
+std::vector<EntityId> Interpreter::extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire) {
+  if (shape.words != Words{"Extrude"} || shape.parts.size() != 1 || !shape.parts[0].isBlock)
+    fail(shape.loc, "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
+  const std::vector<EntityId> shapes = shapesIn(shape.parts[0]);
+  const std::vector<double> wires = shapeArguments(wire);
+  if (wires.size() != 1) fail(wire.loc, "Using Wire takes one wire, as in Using Wire{2}");
+  SolidModeling* solids = solidModeling("Extrude Using Wire", shape.loc);
+  if (!solids) return {};
+  try {
+    return solids->extrudeAlongWire(shapes, clampedInteger<int>(wires[0]));
+  } catch (const GeometryError& error) {
+    fail(shape.loc, error.what());
+  }
+}
+
 // The OpenCASCADE operations that give shapes as values; nullopt for the others.
 std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr& shape) {
   const std::string& word = shape.words[0];
@@ -316,6 +371,16 @@ void Interpreter::mergeCadFile(const std::string& file, const SourceLocation& wh
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
+}
+
+// Save "part.brep" / "part.step": the OpenCASCADE model's shapes.
+void Interpreter::saveCadFile(const std::string& path, const SourceLocation& where) {
+  try {
+    session_.factories().solidModeler().exportShapes(path);
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+  session_.log().info("Wrote '" + path + "'");
 }
 
 void Interpreter::executeRounding(const ast::CommandStmt& command, const SourceLocation& where) {

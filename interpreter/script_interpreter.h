@@ -11,6 +11,7 @@
 
 #include "grammar/ast.h"
 #include "interpreter/function_registry.h"
+#include "kernel/solid_modeling.h"
 #include "interpreter/value.h"
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
@@ -21,7 +22,6 @@
 namespace geomesh {
 
 class Session;
-class SolidModeling;
 
 // Walks the AST of a script and its Includes, keeping the variables, macros and source texts
 // of one run. The member functions are spread over files by concern: statements
@@ -137,12 +137,17 @@ class Interpreter {
                                       const std::vector<ast::ShapePart>& parts, int tag,
                                       const SourceLocation& where);
   void executeBoolean(const ast::CommandStmt& command, const SourceLocation& where);
+  void reportReplacements(const std::string& word,
+                          const std::vector<SolidModeling::Replacement>& replaced,
+                          const SourceLocation& where);
   std::vector<EntityId> roundedShapes(const ast::Expr& shape);
   void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
   std::vector<EntityId> closestShapes(const ast::Expr& shape);
+  std::vector<EntityId> extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
   void mergeCadFile(const std::string& file, const SourceLocation& where);
+  void saveCadFile(const std::string& path, const SourceLocation& where);
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);

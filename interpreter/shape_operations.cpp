@@ -173,6 +173,12 @@ void Interpreter::executeShapeOperation(const ast::CommandStmt& command,
   if (command.shape && command.op.empty() && command.tail.empty() &&
       shapeOperation(*command.shape))
     return;
+  if (command.shape && command.op.empty() && command.tail.size() == 1 &&
+      command.tail[0].word == "Using" && command.tail[0].value &&
+      command.tail[0].value->words == Words{"Wire"}) {
+    extrudeAlongWire(*command.shape, *command.tail[0].value);
+    return;
+  }
   unsupportedStatement(command, where);
 }
 

@@ -51,8 +51,19 @@ class SolidModeling {
                                         const std::vector<EntityId>& objects,
                                         const std::vector<EntityId>& tools, bool deleteObjects,
                                         bool deleteTools, int tag) = 0;
+  // What the last Boolean made of each input it deleted and did not keep as it was: the
+  // entities that took its place (none when it is gone), in the result's order.
+  struct Replacement {
+    EntityId input;
+    std::vector<EntityId> images;
+  };
+  virtual const std::vector<Replacement>& lastReplacements() const = 0;
   // Geometry.ToleranceBoolean.
   virtual void setBooleanTolerance(double tolerance) = 0;
+
+  // Extrude{shapes} Using Wire{w}: the entities the sweep along the wire makes.
+  virtual std::vector<EntityId> extrudeAlongWire(const std::vector<EntityId>& shapes,
+                                                 int wireTag) = 0;
 
   // (Ruled) ThruSections(tag) = {wires}; Fillet{volumes}{curves}{radii};
   // Chamfer{volumes}{curves}{surfaces}{distances}.

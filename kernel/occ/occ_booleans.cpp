@@ -196,6 +196,26 @@ std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) 
   return out;
 }
 
+// The inputs that were deleted and not kept as they were, with the entities now in their place.
+std::vector<SolidModeling::Replacement> replacementsOf(const OccShapes& shapes,
+                                                       const std::vector<BooleanInput>& inputs) {
+  std::vector<SolidModeling::Replacement> out;
+  for (const BooleanInput& in : inputs) {
+    if (!in.remove || in.unchanged()) continue;
+    SolidModeling::Replacement r{in.id, {}};
+    if (!in.deleted)
+      for (const TopoDS_Shape& image : in.modified) {
+        const int dim = shapeDimension(image);
+        if (dim < 0 || !shapes.isBound(dim, image)) continue;
+        const EntityId e{dim, shapes.tagOf(dim, image)};
+        if (std::find(r.images.begin(), r.images.end(), e) == r.images.end())
+          r.images.push_back(e);
+      }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
@@ -247,7 +267,9 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
         !shapes_->contains(in.id.dim, in.id.tag))
       shapes_->bindShape(in.id.dim, in.id.tag, image);
   }
-  return bindResult(*shapes_, result);
+  std::vector<EntityId> out = bindResult(*shapes_, result);
+  replacements_ = replacementsOf(*shapes_, inputs);
+  return out;
 }
 
 }  // namespace geomesh

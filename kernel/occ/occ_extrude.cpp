@@ -1,5 +1,6 @@
 // The OpenCASCADE factory's extrusions: translations (prisms) and rotations (revolutions) of
 // points, curves and surfaces, numbered as the reference numbers them.
+#include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRep_Builder.hxx>
@@ -9,8 +10,10 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Wire.hxx>
 #include <gp_Ax1.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -127,6 +130,38 @@ std::vector<EntityId> OccFactory::extrude(const std::vector<EntityId>& shapes,
       shapes_->extrusions[{e.dim, lateral}] =
           ExtrusionRecord{sourceTag, layers, lateralTop, motionRecord};
     }
+  }
+  return out;
+}
+
+// Extrude{shapes} Using Wire{w}: the shapes swept along the wire, its start first. Returns
+// what the sweep made (the volumes of swept surfaces, the surfaces of swept curves), as the
+// reference does.
+std::vector<EntityId> OccFactory::extrudeAlongWire(const std::vector<EntityId>& shapes,
+                                                   int wireTag) {
+  const TopoDS_Wire spine = TopoDS::Wire(shapes_->findWire(std::abs(wireTag)));
+  TopoDS_Compound inputs;
+  BRep_Builder builder;
+  builder.MakeCompound(inputs);
+  int sweptDim = 1;
+  for (const EntityId& e : shapes) {
+    if (e.dim < 0 || e.dim > 2)
+      throw GeometryError("Extrude: " + entityName(e.dim, std::abs(e.tag)) +
+                          " cannot be swept along a wire");
+    builder.Add(inputs, shapes_->find(e.dim, std::abs(e.tag)));
+    sweptDim = std::max(sweptDim, e.dim + 1);
+  }
+  const TopoDS_Shape result = guarded("Extrude Using Wire", [&] {
+    BRepOffsetAPI_MakePipe pipe(spine, inputs, GeomFill_IsDiscreteTrihedron);
+    pipe.Build();
+    if (!pipe.IsDone())
+      throw GeometryError("Extrude Using Wire: OpenCASCADE could not sweep the shapes");
+    return pipe.Shape();
+  });
+  std::vector<EntityId> out;
+  for (TopExp_Explorer it(result, kTypes[sweptDim]); it.More(); it.Next()) {
+    const EntityId e{sweptDim, shapes_->bindNew(sweptDim, it.Current())};
+    if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
   }
   return out;
 }

@@ -91,6 +91,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
                                 bool deleteTools, int tag = -1) override;
   // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
   void setBooleanTolerance(double tolerance) override { booleanTolerance_ = tolerance; }
+  const std::vector<Replacement>& lastReplacements() const override { return replacements_; }
 
   // Extrude{..}{shapes} (kernel/occ/occ_extrude.cpp): a translation or a rotation (not a
   // twist) of points, curves and surfaces. For each shape: its top, the entity swept, then the
@@ -129,6 +130,11 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag) override;
   void addCompound(int dim, const std::vector<int>& tags) override;
 
+  // Extrude{shapes} Using Wire{w}: the shapes swept along the wire (a pipe). Returns the
+  // volumes (or surfaces) the sweep made, new tags in OpenCASCADE's order.
+  std::vector<EntityId> extrudeAlongWire(const std::vector<EntityId>& shapes,
+                                         int wireTag) override;
+
   // Queries and operations (kernel/occ/occ_queries.cpp), as the built-in factory offers them.
   void transform(const std::vector<EntityId>& shapes, const AffineMap& map) override;
   std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes) override;
@@ -158,6 +164,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   std::unique_ptr<OccShapes> shapes_;
   std::map<int, double> meshSizes_;  // at points
   double booleanTolerance_ = 0;
+  std::vector<Replacement> replacements_;  // of the last Boolean
 
   int primitiveTag(int dim, int tag, const char* what) const;
   void addChain(int tag, const std::vector<int>& curves, bool closed);

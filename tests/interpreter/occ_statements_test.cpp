@@ -2,6 +2,7 @@
 // lofts, fillets, CAD files; their errors point at the statement and give the reason.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "kernel/occ/occ_factory.h"
@@ -54,6 +55,39 @@ TEST(OccStatements, LoftsFilletsAndWires) {
   EXPECT_EQ(run.out.str(), "3 1 11 12\n");  // as the reference numbers them
 }
 
+TEST(OccStatements, ExtrudeAlongAWire) {
+  ScriptRun run;
+  run.run(kOcc + "Point(1) = {0, 0, 0};\nPoint(2) = {0, 0, 2};\nLine(1) = {1, 2};\n"
+                 "Wire(1) = {1};\nDisk(1) = {0, 0, 0, 0.5};\n"
+                 "Extrude { Surface{1}; } Using Wire {1}\nv() = Volume{:};\n"
+                 "Printf(\"%g %g\", #v(), v(0));\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  EXPECT_EQ(run.out.str(), "1 1\n");
+}
+
+// Beyond the reference, which renumbers silently: a physical group naming an entity a Boolean
+// replaced gets a warning at the Boolean, and each replacement is logged.
+TEST(OccStatements, PhysicalGroupsOfReplacedEntitiesAreWarnedOf) {
+  ScriptRun run;
+  run.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0.5, 0.5, 0.5, 1, 1, 1};\n"
+                 "Box(5) = {5, 0, 0, 1, 1, 1};\nPhysical Volume(\"block\", 7) = {1, 5};\n"
+                 "BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; }\n"
+                 "Box(9) = {9, 0, 0, 1, 1, 1};\nPhysical Volume(8) = {9};\n"
+                 "BooleanDifference{ Volume{9}; Delete; }{ Volume{6}; Delete; }\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_EQ(run.log.warnings[0],
+            "test.geo:6:1: warning: Physical Volume 7 (\"block\") names Volume 1, which "
+            "BooleanFragments replaced by Volume 6, Volume 7");
+  ASSERT_GE(run.log.infos.size(), 2u);
+  EXPECT_NE(std::find(run.log.infos.begin(), run.log.infos.end(),
+                      "BooleanFragments (test.geo:6): Volume 2 -> Volume 7, Volume 8"),
+            run.log.infos.end());
+  // Volume 9 keeps its tag through the difference: nothing to warn of.
+  EXPECT_NE(std::find(run.log.infos.begin(), run.log.infos.end(),
+                      "BooleanDifference (test.geo:9): Volume 6 -> nothing"),
+            run.log.infos.end());
+}
+
 TEST(OccStatements, ShapeFromFileAndMerge) {
   const std::filesystem::path part = scratch::path("occ-statements-part.brep");
   OccFactory maker;
@@ -70,6 +104,20 @@ TEST(OccStatements, ShapeFromFileAndMerge) {
   EXPECT_EQ(run.session.model().volumes().size(), 1u);
   EXPECT_EQ(run.session.model().points().size(), 9u);
   std::filesystem::remove(part);
+}
+
+TEST(OccStatements, SaveWritesWhatShapeFromFileReads) {
+  const std::filesystem::path step = scratch::path("occ-statements-saved.step");
+  ScriptRun writer;
+  writer.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nSphere(2) = {3, 0, 0, 1};\nSave \"" +
+             step.string() + "\";\n");
+  EXPECT_EQ(printed(kOcc + "v() = ShapeFromFile(\"" + step.string() +
+                    "\");\nPrintf(\"%g %g %g\", #v(), v(0), v(1));\n"),
+            "2 1 2\n");
+  std::filesystem::remove(step);
+  EXPECT_NE(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nSave \"/no/such/dir/x.brep\";\n")
+                .find("test.geo:3:1: error:"),
+            std::string::npos);
 }
 
 TEST(OccStatements, ErrorsPointAtTheStatementWithTheReason) {

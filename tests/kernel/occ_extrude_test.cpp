@@ -67,5 +67,20 @@ TEST(OccExtrude, RevolvedSurfaces) {
   EXPECT_THROW(occ.extrude({{3, 1}}, ExtrusionMotion::translate({0, 0, 1}), {}), GeometryError);
 }
 
+// Extrude Using Wire: a disk swept along a straight wire is a cylinder; the result is the
+// volume alone, as the reference returns it.
+TEST(OccExtrude, AlongAWire) {
+  OccFactory occ;
+  occ.addPoint(1, {0, 0, 0}, 0);
+  occ.addPoint(2, {0, 0, 2}, 0);
+  occ.addLine(1, 1, 2);
+  occ.addWire(1, {1});
+  occ.addDisk(1, {0, 0, 0}, 0.5, 0.5);
+  const std::vector<EntityId> r = occ.extrudeAlongWire({{2, 1}}, 1);
+  EXPECT_EQ(r, (std::vector<EntityId>{{3, 1}}));
+  EXPECT_NEAR(occ.volume(1), std::numbers::pi * 0.25 * 2, 1e-6);
+  EXPECT_THROW(occ.extrudeAlongWire({{2, 1}}, 7), GeometryError);
+}
+
 }  // namespace
 }  // namespace geomesh
