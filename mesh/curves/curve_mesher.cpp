@@ -119,9 +119,11 @@ class SizeIntegral {
 };
 
 // Bounds on the size besides the end points' sizes, at SizeIntegral's sample arc lengths: the
-// background field and the curvature bound (SizeRules::curvatureSize). Empty when neither applies.
-std::vector<double> sampleSizeBounds(const ModelCurve& curve, const ArcLengthTable& arc,
-                                     const SizeRules& rules, const SizeFields* fields) {
+// background field and the curvature bound (SizeRules::curvatureSize) of the curve and of the
+// surfaces it bounds, where they place it. Empty when neither applies.
+std::vector<double> sampleSizeBounds(const Model& model, const ModelCurve& curve,
+                                     const ArcLengthTable& arc, const SizeRules& rules,
+                                     const SizeFields* fields) {
   const bool field = fields && fields->hasBackground();
   if (!field && !(rules.elementsPerTwoPi > 0)) return {};
   const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
@@ -139,6 +141,15 @@ std::vector<double> sampleSizeBounds(const ModelCurve& curve, const ArcLengthTab
   if (field) fields->evaluate(points, {1, curve.tag}, sizes);
   for (std::size_t k = 0; k < sizes.size(); ++k)
     sizes[k] = std::min(sizes[k], rules.curvatureSize(curveCurvature(*curve.geometry, ts[k])));
+  if (!(rules.elementsPerTwoPi > 0)) return sizes;
+  for (int tag : model.upward({1, curve.tag})) {
+    const ModelSurface* surface = model.surface(tag);
+    if (!surface || !surface->geometry) continue;
+    for (std::size_t k = 0; k < sizes.size(); ++k)
+      if (const auto uv = surface->geometry->curveParameters(curve.tag, ts[k]))
+        sizes[k] =
+            std::min(sizes[k], rules.curvatureSize(surfaceCurvature(*surface->geometry, *uv)));
+  }
   return sizes;
 }
 
@@ -211,7 +222,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
   const SizeIntegral integral(arc.length(), startSize, endSize, rules,
-                              sampleSizeBounds(curve, arc, rules, fields));
+                              sampleSizeBounds(model, curve, arc, rules, fields));
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
   constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
   if (integral.total() > kMaxSegments)

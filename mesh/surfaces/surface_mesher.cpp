@@ -331,10 +331,16 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     throw MeshError(id, "the boundary encloses no area");
 
   const SurfaceMetric metric(g, frame);
-  const WorkPlaneSize field = [&](Vec2 work) {
-    return rules.finish(fields->at(g.point(frame.toParam(work)), id));
-  };
+  // Bounds on the interior's size besides the boundary's: the background field, and with
+  // Mesh.MeshSizeFromCurvature the surface's own curvature.
   const bool withField = fields && fields->hasBackground();
+  const bool withCurvature = rules.elementsPerTwoPi > 0 && !g.isPlane();
+  const WorkPlaneSize field = [&](Vec2 work) {
+    const Vec2 uv = frame.toParam(work);
+    double size = withField ? fields->at(g.point(uv), id) : rules.sizeMax;
+    if (withCurvature) size = std::min(size, rules.curvatureSize(surfaceCurvature(g, uv)));
+    return rules.finish(size);
+  };
   setBoundarySizes(in, rules, mesh, tri);
   for (std::size_t k = 0; k < in.seeds.size(); ++k)
     tri.setSize(firstSeed(in) + static_cast<std::uint32_t>(k), in.seedSize);
@@ -343,7 +349,8 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   const std::uint32_t firstMovable =
       firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
   SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
-                           g.isPlane() ? nullptr : &metric, withField ? &field : nullptr};
+                           g.isPlane() ? nullptr : &metric,
+                           withField || withCurvature ? &field : nullptr};
   const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);

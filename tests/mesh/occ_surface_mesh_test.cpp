@@ -3,7 +3,9 @@
 // volume.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "kernel/occ/occ_factory.h"
@@ -159,6 +161,35 @@ TEST(OccSurfaceMesh, PoleFanHasNoCollapsedTriangle) {
     for (NodeIndex p : poles) atPoles += (n[0] == p) + (n[1] == p) + (n[2] == p);
   }
   EXPECT_GE(atPoles, 12);  // at least six triangles around each pole
+}
+
+// With Mesh.MeshSizeFromCurvature, the surfaces' curvature bounds the size too: on the
+// cylinder's straight seam and inside its lateral face, 2 pi r / N.
+TEST(OccSurfaceMesh, SurfaceCurvatureBoundsTheSize) {
+  const Model model = importedModel(writeBrep(cylinder()));
+  MeshOptions options;
+  options.sizeFromCurvature = 16;
+  QuietSink log;
+  Mesh mesh;
+  generateMesh(model, options, 2, mesh, log);
+  const double bound = 2 * std::numbers::pi / 16;
+  for (const auto& [tag, curve] : model.curves()) {
+    const std::size_t lines = mesh.find({1, tag})->findBlock(ElementType::Line2)->size();
+    if (curve.geometry->kind() == CurveKind::Line) {
+      EXPECT_GE(lines, std::size_t(2 / bound));  // the seam, of length 2
+    }
+  }
+  double longest = 0;
+  for (const auto& [id, em] : mesh.entities()) {
+    if (id.dim != 2) continue;
+    const ElementBlock* t = em.findBlock(ElementType::Triangle3);
+    for (std::size_t e = 0; e < t->size(); ++e)
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, distance(mesh.node(t->element(e)[k]),
+                                              mesh.node(t->element(e)[(k + 1) % 3])));
+  }
+  EXPECT_LT(longest, 1.6 * bound);
+  EXPECT_TRUE(checkMesh(model, mesh).ok());
 }
 
 // The unit square, whose curves on the surface are off by the CAD model's tolerance (1e-4 times
