@@ -2,6 +2,9 @@
 // CAD parts for tests, built with OpenCASCADE and written to scratch BREP or STEP files at run
 // time: a cylinder, a sphere, a cone, a torus and a box with a cylindrical hole.
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -52,6 +55,19 @@ inline Part boxWithHole() {  // 2 x 2 x 1, a hole of radius 0.5 through its heig
   BRepAlgoAPI_Cut cut(box, hole);
   return {"box_with_hole", cut.Shape(), 2 * (4 - pi * 0.25) + 4 * 2 + 2 * pi * 0.5,
           4 - pi * 0.25};
+}
+
+// A saddle: the ruled face between two skew unit segments, z = (1 - 2x) y / 2 over the unit
+// square, bounded by four straight edges; its curvature is 1 at its centre.
+inline Part saddle() {
+  auto segment = [](gp_Pnt a, gp_Pnt b) {
+    return BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(a, b).Edge()).Wire();
+  };
+  BRepOffsetAPI_ThruSections loft(false, true);
+  loft.AddWire(segment(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)));
+  loft.AddWire(segment(gp_Pnt(0, 1, 0.5), gp_Pnt(1, 1, -0.5)));
+  loft.Build();
+  return {"saddle", loft.Shape(), 0, 0};
 }
 
 inline std::string writeBrep(const Part& part) {
