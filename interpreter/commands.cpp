@@ -7,7 +7,7 @@
 
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "stdlib/colors.h"
 
 namespace geomesh {
@@ -91,6 +91,7 @@ void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLo
     const std::string factory = evaluateString(*command.args[0]);
     if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
   }
+  session_.noteIgnoredStatement(where);
   warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
 }
 

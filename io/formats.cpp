@@ -1,0 +1,171 @@
+// The table of mesh file formats and the lookups over it.
+#include "io/formats.h"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/msh_reader.h"
+#include "io/msh_writer.h"
+
+namespace geomesh {
+
+namespace {
+
+void writeMsh41(std::ostream& out, const Model& model, const Mesh& mesh,
+                const MeshWriteOptions& options) {
+  writeMsh(out, model, mesh, {options.saveAll, options.binary, 4.1});
+}
+
+void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
+                const MeshWriteOptions& options) {
+  writeMsh(out, model, mesh, {options.saveAll, options.binary, 2.2});
+}
+
+// One row per format. Adding a format: its file in io/ defines the writer (and reader), and
+// one row here names them.
+constexpr MeshFormat kFormats[] = {
+    {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh},
+    {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh},
+};
+
+// The words of a space-separated list.
+std::vector<std::string_view> words(std::string_view list) {
+  std::vector<std::string_view> result;
+  while (!list.empty()) {
+    const std::size_t end = list.find(' ');
+    result.push_back(list.substr(0, end));
+    list = end == std::string_view::npos ? std::string_view() : list.substr(end + 1);
+  }
+  return result;
+}
+
+bool contains(std::string_view list, std::string_view word) {
+  for (std::string_view w : words(list))
+    if (w == word) return true;
+  return false;
+}
+
+// The first row that matches and whose minVersion admits `version`, else the last row that
+// matches (the oldest version).
+template <class Matches>
+const MeshFormat* findVersion(double version, Matches matches) {
+  const MeshFormat* last = nullptr;
+  for (const MeshFormat& format : kFormats) {
+    if (!matches(format)) continue;
+    if (version >= format.minVersion) return &format;
+    last = &format;
+  }
+  return last;
+}
+
+// Items joined by ", ", each once.
+std::string joinedOnce(const std::vector<std::string>& items) {
+  std::string text;
+  std::vector<std::string> seen;
+  for (const std::string& item : items) {
+    if (std::find(seen.begin(), seen.end(), item) != seen.end()) continue;
+    seen.push_back(item);
+    text += (text.empty() ? "" : ", ") + item;
+  }
+  return text;
+}
+
+}  // namespace
+
+bool MeshFormat::isNamed(std::string_view name) const { return contains(names, name); }
+
+bool MeshFormat::hasExtension(std::string_view extension) const {
+  return contains(extensions, extension);
+}
+
+std::span<const MeshFormat> meshFormats() { return kFormats; }
+
+const MeshFormat* findFormatByName(std::string_view name) {
+  for (const MeshFormat& format : kFormats)
+    if (format.write && format.isNamed(name)) return &format;
+  return nullptr;
+}
+
+const MeshFormat* findFormatByExtension(std::string_view extension, double version) {
+  return findVersion(version, [&](const MeshFormat& f) {
+    return f.write && f.hasExtension(extension);
+  });
+}
+
+const MeshFormat* findFormatByCode(int code, double version) {
+  return findVersion(version, [&](const MeshFormat& f) { return f.write && f.code == code; });
+}
+
+const MeshFormat* findReaderByExtension(std::string_view extension) {
+  for (const MeshFormat& format : kFormats)
+    if (format.read && format.hasExtension(extension)) return &format;
+  return nullptr;
+}
+
+std::string formatNameList() {
+  std::vector<std::string> names;
+  for (const MeshFormat& format : kFormats)
+    if (format.write)
+      for (std::string_view name : words(format.names)) names.emplace_back(name);
+  return joinedOnce(names);
+}
+
+std::string formatNameGroups() {
+  std::vector<std::string> groups;
+  for (const MeshFormat& format : kFormats) {
+    if (!format.write) continue;
+    const std::vector<std::string_view> names = words(format.names);
+    std::string group(names.front());
+    for (std::size_t i = 1; i < names.size(); ++i)
+      group += (i == 1 ? " (" : ", ") + std::string(names[i]);
+    groups.push_back(names.size() > 1 ? group + ")" : group);
+  }
+  return joinedOnce(groups);
+}
+
+std::string writtenExtensionList() {
+  std::vector<std::string> extensions;
+  for (const MeshFormat& format : kFormats)
+    if (format.write)
+      for (std::string_view extension : words(format.extensions)) extensions.emplace_back(extension);
+  return joinedOnce(extensions);
+}
+
+std::string readExtensionList() {
+  std::vector<std::string> extensions;
+  for (const MeshFormat& format : kFormats)
+    if (format.read)
+      for (std::string_view extension : words(format.extensions)) extensions.emplace_back(extension);
+  return joinedOnce(extensions);
+}
+
+std::string formatCodeList() {
+  std::vector<std::string> codes;
+  for (const MeshFormat& format : kFormats)
+    if (format.write)
+      codes.push_back(std::to_string(format.code) + " (" +
+                      std::string(words(format.extensions).front().substr(1)) + ")");
+  return joinedOnce(codes);
+}
+
+void writeMeshFile(const std::string& path, const MeshFormat& format, const Model& model,
+                   const Mesh& mesh, const MeshWriteOptions& options) {
+  if (!format.write)
+    throw std::runtime_error("cannot write '" + path + "': " + std::string(format.name()) +
+                             " files are only read");
+  writeFileAtomically(path, [&](std::ostream& out) { format.write(out, model, mesh, options); });
+}
+
+void readMeshFile(const std::string& path, const MeshFormat& format, Model& model, Mesh& mesh) {
+  if (!format.read)
+    throw std::runtime_error("cannot read '" + path + "': " + std::string(format.name()) +
+                             " files are only written");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error("cannot open '" + path + "'");
+  format.read(file, model, mesh, path);
+}
+
+}  // namespace geomesh
