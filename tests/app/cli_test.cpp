@@ -394,3 +394,62 @@ TEST_F(Cli, SystemCallsAreRefusedUnlessAllowed) {
 
 }  // namespace
 }  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+const char* kOpenCascadeOnly = R"(SetFactory("OpenCASCADE");
+Box(1) = {0, 0, 0, 1, 1, 1};
+Sphere(2) = {0, 0, 0, 0.5};
+Physical Volume("solid") = {1};
+)";
+
+TEST_F(Cli, MeshingAModelThatIgnoredStatementsLeftEmptyIsAnError) {
+  fs::path geo = write("occ.geo", kOpenCascadeOnly);
+  EXPECT_EQ(run({geo.string(), "-3"}), 1);
+  const std::string err = err_.str();
+  EXPECT_NE(err.find(geo.string() + ":1:1: error: nothing to mesh: 3 statements were ignored as "
+                                    "not supported yet (the first here) and the model has no "
+                                    "point, curve, surface or volume\n"
+                                    "SetFactory(\"OpenCASCADE\");\n^"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("Meshing 1D"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir_ / "occ.msh"));
+  EXPECT_FALSE(fs::exists(dir_ / "occ.msh.partial"));
+  // Evaluating it alone is no error: nothing was asked to be meshed.
+  EXPECT_EQ(run({geo.string()}), 0) << err_.str();
+}
+
+TEST_F(Cli, IgnoredStatementsBesideGeometryStillMesh) {
+  fs::path geo = write("mixed.geo", std::string(kSquare) + "Box(2) = {0, 0, 0, 1, 1, 1};\n");
+  EXPECT_EQ(run({geo.string(), "-2"}), 0) << err_.str();
+  EXPECT_NE(err_.str().find("'Box' is not supported yet"), std::string::npos) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "mixed.msh"));
+}
+
+TEST_F(Cli, FormatErrorsListTheTablesNames) {
+  fs::path geo = write("sq.geo", kSquare);
+  EXPECT_EQ(run({geo.string(), "-2", "-format", "nope"}), 1);
+  EXPECT_NE(err_.str().find("unsupported output format 'nope' (supported: msh41, msh4, msh, "
+                            "msh22, msh2"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "sq.msh"));
+  EXPECT_EQ(run({"-help"}), 0);
+  EXPECT_NE(out_.str().find("-format FORMAT         output format: msh41 (msh4, msh), msh22 (msh2)"),
+            std::string::npos)
+      << out_.str();
+}
+
+TEST_F(Cli, MeshFormatOptionAndVersionChooseTheRow) {
+  fs::path geo = write("sq.geo", std::string(kSquare) + "Mesh.MshFileVersion = 2.2;\n");
+  ASSERT_EQ(run({geo.string(), "-2"}), 0) << err_.str();
+  EXPECT_EQ(slurp(dir_ / "sq.msh").rfind("$MeshFormat\n2.2 0 8\n", 0), 0u);
+  fs::path coded = write("coded.geo", std::string(kSquare) + "Mesh.Format = 1;\n");
+  ASSERT_EQ(run({coded.string(), "-2", "-o", (dir_ / "coded.out").string()}), 0) << err_.str();
+  EXPECT_EQ(slurp(dir_ / "coded.out").rfind("$MeshFormat\n4.1 0 8\n", 0), 0u);
+}
+
+}  // namespace
+}  // namespace geomesh
