@@ -12,6 +12,10 @@
 
 namespace geomesh {
 
+// Defined in the file of each format.
+void writeVtk(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+
 namespace {
 
 void writeMsh41(std::ostream& out, const Model& model, const Mesh& mesh,
@@ -29,6 +33,7 @@ void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
 constexpr MeshFormat kFormats[] = {
     {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh},
     {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh},
+    {"vtk", ".vtk", 16, 0.0, writeVtk, nullptr},
 };
 
 // The words of a space-separated list.
