@@ -54,10 +54,11 @@ void requireSomethingToMesh(Session& session, int dim) {
   session.synchronize();
   if (hasEntityUpTo(session.model(), dim)) return;
   const std::size_t count = session.ignoredStatementCount();
-  failAt(*first, "nothing to mesh: " + std::to_string(count) +
-                     (count == 1 ? " statement was" : " statements were") +
-                     " ignored as not supported yet (" + (count == 1 ? "this one" : "the first here") +
-                     ") and the model has no " + entityKinds(dim));
+  const std::string ignored = count == 1 ? " statement was ignored as not supported yet (this one)"
+                                         : " statements were ignored as not supported yet (the "
+                                           "first here)";
+  failAt(*first, "nothing to mesh: " + std::to_string(count) + ignored +
+                     " and the model has no " + entityKinds(dim));
 }
 
 }  // namespace geomesh::api

@@ -7,9 +7,9 @@
 
 namespace geomesh::api {
 
-// Options themselves are set on session.options(). -setnumber / -setstring: the option of that name if there is one, else a parameter that the
+// -setnumber / -setstring: the option of that name if there is one, else a parameter that the
 // script reads as a variable and that overrides its DefineConstant / DefineNumber /
-// DefineString of the same name.
+// DefineString of the same name. (Options alone are set on session.options().)
 void setNumber(Session& session, const std::string& name, double value);
 void setString(Session& session, const std::string& name, const std::string& value);
 

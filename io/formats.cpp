@@ -78,6 +78,16 @@ std::string joinedOnce(const std::vector<std::string>& items) {
   return text;
 }
 
+// The words of one field of the rows that can `use` (write or read), each once.
+template <class Use>
+std::string listed(std::string_view MeshFormat::*field, Use MeshFormat::*use) {
+  std::vector<std::string> items;
+  for (const MeshFormat& format : kFormats)
+    if (format.*use)
+      for (std::string_view word : words(format.*field)) items.emplace_back(word);
+  return joinedOnce(items);
+}
+
 }  // namespace
 
 bool MeshFormat::isNamed(std::string_view name) const { return contains(names, name); }
@@ -110,13 +120,7 @@ const MeshFormat* findReaderByExtension(std::string_view extension) {
   return nullptr;
 }
 
-std::string formatNameList() {
-  std::vector<std::string> names;
-  for (const MeshFormat& format : kFormats)
-    if (format.write)
-      for (std::string_view name : words(format.names)) names.emplace_back(name);
-  return joinedOnce(names);
-}
+std::string formatNameList() { return listed(&MeshFormat::names, &MeshFormat::write); }
 
 std::string formatNameGroups() {
   std::vector<std::string> groups;
@@ -132,20 +136,10 @@ std::string formatNameGroups() {
 }
 
 std::string writtenExtensionList() {
-  std::vector<std::string> extensions;
-  for (const MeshFormat& format : kFormats)
-    if (format.write)
-      for (std::string_view extension : words(format.extensions)) extensions.emplace_back(extension);
-  return joinedOnce(extensions);
+  return listed(&MeshFormat::extensions, &MeshFormat::write);
 }
 
-std::string readExtensionList() {
-  std::vector<std::string> extensions;
-  for (const MeshFormat& format : kFormats)
-    if (format.read)
-      for (std::string_view extension : words(format.extensions)) extensions.emplace_back(extension);
-  return joinedOnce(extensions);
-}
+std::string readExtensionList() { return listed(&MeshFormat::extensions, &MeshFormat::read); }
 
 std::string formatCodeList() {
   std::vector<std::string> codes;

@@ -437,7 +437,8 @@ TEST_F(Cli, FormatErrorsListTheTablesNames) {
       << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "sq.msh"));
   EXPECT_EQ(run({"-help"}), 0);
-  EXPECT_NE(out_.str().find("-format FORMAT         output format: msh41 (msh4, msh), msh22 (msh2)"),
+  EXPECT_NE(out_.str().find("-format FORMAT         output format: msh41 (msh4, msh), "
+                            "msh22 (msh2)"),
             std::string::npos)
       << out_.str();
 }
