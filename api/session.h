@@ -1,8 +1,8 @@
 #pragma once
 
 #include <iosfwd>
-#include <cstdint>
 #include <map>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <set>
