@@ -6,6 +6,7 @@
 
 #include "stdlib/clamped_integer.h"
 #include "stdlib/edit_distance.h"
+#include "stdlib/system_info.h"
 
 namespace geomesh {
 
@@ -41,6 +42,8 @@ OptionRegistry::OptionRegistry() {
       names_.push_back(alias);
     }
   }
+  Option& executable = *findMutable("General.ExecutableFileName");
+  executable.text = executable.defaultText = executablePath();
 }
 
 const OptionRegistry::Option* OptionRegistry::find(std::string_view name) const {

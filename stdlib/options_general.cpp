@@ -1,5 +1,6 @@
 // The General. options: name, type, default, help line, old names. Defaults follow the
 // reference manual; the help lines are this project's own words.
+#include "stdlib/build_info.h"
 #include "stdlib/option_table.h"
 
 namespace geomesh {
@@ -14,12 +15,12 @@ std::span<const OptionSpec> generalOptions() {
       {"General.AxesLabelY", String, 0, "", "label of the y axis", ""},
       {"General.AxesLabelZ", String, 0, "", "label of the z axis", ""},
       {"General.BackgroundImageFileName", String, 0, "", "JPEG, PNG or PDF image drawn behind the model", ""},
-      {"General.BuildInfo", String, 0, "Version: 4.15.2; License: GNU General Public License; Build OS: Linux64-sdk; Build date: 20260324; Build host: gmsh.info; Build options: 64Bit ALGLIB[contrib] ANN[contrib] Bamg Blas[petsc] Blossom Cgns DIntegration Dlopen DomHex Eigen[contrib] Fltk Gmm[contrib] Hxt Jpeg Kbipack Lapack[petsc] LinuxJoystick MathEx[contrib] Med Mesh Metis[contrib] Mmg Mpeg Netgen Nii2mesh ONELAB ONELABMetamodel OpenCASCADE OpenCASCADE-CAF OpenGL OpenMP OptHom PETSc Parser Plugins Png Post QuadMeshingTools QuadTri Solver TetGen/BR TinyXML2[contrib] Untangle Voro++[contrib] WinslowUntangler Zlib tinyobjloader; FLTK version: 1.3.11; PETSc version: 3.14.4 (real arithmtic); OCC version: 7.8.1; MED version: 4.1.0; Packaged by: geuzaine; Web site: https://gmsh.info; Issue tracker: https://gitlab.onelab.info/gmsh/gmsh/issues", "how this program was built (read-only)", ""},
-      {"General.BuildOptions", String, 0, "64Bit ALGLIB[contrib] ANN[contrib] Bamg Blas[petsc] Blossom Cgns DIntegration Dlopen DomHex Eigen[contrib] Fltk Gmm[contrib] Hxt Jpeg Kbipack Lapack[petsc] LinuxJoystick MathEx[contrib] Med Mesh Metis[contrib] Mmg Mpeg Netgen Nii2mesh ONELAB ONELABMetamodel OpenCASCADE OpenCASCADE-CAF OpenGL OpenMP OptHom PETSc Parser Plugins Png Post QuadMeshingTools QuadTri Solver TetGen/BR TinyXML2[contrib] Untangle Voro++[contrib] WinslowUntangler Zlib tinyobjloader", "features compiled into this build (read-only)", ""},
+      {"General.BuildInfo", String, 0, GEOMESH_BUILD_INFO, "how this program was built (read-only)", ""},
+      {"General.BuildOptions", String, 0, GEOMESH_BUILD_OPTIONS, "features compiled into this build (read-only)", ""},
       {"General.DefaultFileName", String, 0, "untitled.geo", "file name used when none is given", ""},
       {"General.Display", String, 0, "", "X display to open a window on (Unix)", ""},
       {"General.ErrorFileName", String, 0, ".gmsh-errors", "file the log is written to when a fatal error happens", ""},
-      {"General.ExecutableFileName", String, 0, "/root/.pyenv/versions/3.11.7/bin/python3.11", "path of the running executable (read-only)", ""},
+      {"General.ExecutableFileName", String, 0, "", "path of the running executable (read-only; set when the program starts)", ""},
       {"General.FileName", String, 0, "", "name of the file read last (read-only)", ""},
       {"General.FltkTheme", String, 0, "", "widget theme of the graphical interface (plastic, gtk+, ...)", ""},
       {"General.GraphicsFont", String, 0, "Helvetica", "font of text in the graphics window", ""},

@@ -1,5 +1,6 @@
 #include "stdlib/system_info.h"
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -26,5 +27,11 @@ double kilobyteField(const char* file, const std::string& key) {
 double processMemoryMegabytes() { return kilobyteField("/proc/self/status", "VmRSS:"); }
 
 double totalMemoryMegabytes() { return kilobyteField("/proc/meminfo", "MemTotal:"); }
+
+std::string executablePath() {
+  std::error_code error;
+  std::filesystem::path path = std::filesystem::read_symlink("/proc/self/exe", error);
+  return error ? std::string() : path.string();
+}
 
 }  // namespace geomesh

@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "stdlib/colors.h"
+#include "stdlib/build_info.h"
 #include "stdlib/options.h"
 
 namespace geomesh {
@@ -28,6 +29,18 @@ TEST(OptionRegistry, RequiredDefaults) {
     ASSERT_TRUE(options.hasNumber(name)) << name;
     EXPECT_DOUBLE_EQ(options.number(name), value) << name;
   }
+}
+
+// The read-only build options describe this program's own build and the running executable.
+TEST(OptionRegistry, BuildOptionsDescribeThisBuild) {
+  OptionRegistry options;
+  const std::string info = options.string("General.BuildInfo");
+  EXPECT_EQ(info.rfind("Version: " GEOMESH_VERSION ";", 0), 0u) << info;
+  EXPECT_NE(info.find("OCC version: 7."), std::string::npos) << info;
+  EXPECT_NE(info.find("Compiler: "), std::string::npos) << info;
+  EXPECT_NE(options.string("General.BuildOptions").find("OpenCASCADE"), std::string::npos);
+  const std::string exe = options.string("General.ExecutableFileName");
+  EXPECT_EQ(exe.substr(exe.rfind('/') + 1), "stdlib_tests") << exe;
 }
 
 TEST(OptionRegistry, EveryOptionHasHelpAndCoversTheThreeCategories) {
