@@ -57,6 +57,8 @@ TEST(OutputFormat, OtherMeshFormatCodesFindTheirRow) {
   OptionRegistry options;
   options.setNumber("Mesh.Format", 1);
   EXPECT_EQ(api::outputFormat(options, "a.anything").name(), "msh41");
+  options.setNumber("Mesh.Format", 16);
+  EXPECT_EQ(api::outputFormat(options, "a.msh").name(), "vtk");
   options.setNumber("Mesh.Format", 47);
   const std::string message = refusal(options, "a.msh");
   EXPECT_EQ(message.rfind("Mesh.Format 47 is not supported yet (supported: 1 (msh)", 0), 0u)
