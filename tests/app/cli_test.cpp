@@ -398,33 +398,34 @@ TEST_F(Cli, SystemCallsAreRefusedUnlessAllowed) {
 namespace geomesh {
 namespace {
 
-const char* kOpenCascadeOnly = R"(SetFactory("OpenCASCADE");
-Box(1) = {0, 0, 0, 1, 1, 1};
-Sphere(2) = {0, 0, 0, 0.5};
-Physical Volume("solid") = {1};
+// A CAD kernel and a CAD file that geomesh does not read: every statement is ignored.
+const char* kForeignCadOnly = R"(SetFactory("Parasolid");
+Merge "wing.x_t";
+Smoother Surface{1} = 3;
 )";
 
 TEST_F(Cli, MeshingAModelThatIgnoredStatementsLeftEmptyIsAnError) {
-  fs::path geo = write("occ.geo", kOpenCascadeOnly);
+  fs::path geo = write("cad.geo", kForeignCadOnly);
   EXPECT_EQ(run({geo.string(), "-3"}), 1);
   const std::string err = err_.str();
   EXPECT_NE(err.find(geo.string() + ":1:1: error: nothing to mesh: 3 statements were ignored as "
                                     "not supported yet (the first here) and the model has no "
                                     "point, curve, surface or volume\n"
-                                    "SetFactory(\"OpenCASCADE\");\n^"),
+                                    "SetFactory(\"Parasolid\");\n^"),
             std::string::npos)
       << err;
   EXPECT_EQ(err.find("Meshing 1D"), std::string::npos) << err;
-  EXPECT_FALSE(fs::exists(dir_ / "occ.msh"));
-  EXPECT_FALSE(fs::exists(dir_ / "occ.msh.partial"));
+  EXPECT_FALSE(fs::exists(dir_ / "cad.msh"));
+  EXPECT_FALSE(fs::exists(dir_ / "cad.msh.partial"));
   // Evaluating it alone is no error: nothing was asked to be meshed.
   EXPECT_EQ(run({geo.string()}), 0) << err_.str();
 }
 
 TEST_F(Cli, IgnoredStatementsBesideGeometryStillMesh) {
-  fs::path geo = write("mixed.geo", std::string(kSquare) + "Box(2) = {0, 0, 0, 1, 1, 1};\n");
+  fs::path geo = write("mixed.geo", std::string(kSquare) + "Smoother Surface{1} = 3;\n");
   EXPECT_EQ(run({geo.string(), "-2"}), 0) << err_.str();
-  EXPECT_NE(err_.str().find("'Box' is not supported yet"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("'Smoother Surface' is not supported yet"), std::string::npos)
+      << err_.str();
   EXPECT_TRUE(fs::exists(dir_ / "mixed.msh"));
 }
 

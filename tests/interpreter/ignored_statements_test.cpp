@@ -8,8 +8,8 @@ namespace {
 
 TEST(IgnoredStatements, UnsupportedStatementsAreRecordedInOrder) {
   ScriptRun run;
-  run.run("a = 1;\nSetFactory(\"OpenCASCADE\");\n"
-          "For i In {1:3}\n  Box(i) = {0, 0, 0, 1, 1, 1};\nEndFor\n");
+  run.run("a = 1;\nSetFactory(\"Parasolid\");\n"
+          "For i In {1:3}\n  Smoother Surface{i} = 3;\nEndFor\n");
   EXPECT_EQ(run.session.ignoredStatementCount(), 2u);
   EXPECT_EQ(run.session.firstIgnoredStatement(), (SourceLocation{"test.geo", 2, 1}));
 }
