@@ -35,12 +35,10 @@ const MeshFormat& outputFormat(const OptionRegistry& options, const std::string&
                                const std::string& formatName) {
   if (!formatName.empty()) return formatNamed(formatName);
   const double version = options.number("Mesh.MshFileVersion");
-  const double code = options.number("Mesh.Format");
+  const int code = clampedInteger<int>(options.number("Mesh.Format"));
   if (code == kFormatByExtension) return formatOfExtension(path, version);
-  const MeshFormat* format =
-      code == static_cast<int>(code) ? findFormatByCode(static_cast<int>(code), version) : nullptr;
-  if (format) return *format;
-  throw std::invalid_argument("Mesh.Format " + std::to_string(clampedInteger<int>(code)) +
+  if (const MeshFormat* format = findFormatByCode(code, version)) return *format;
+  throw std::invalid_argument("Mesh.Format " + std::to_string(code) +
                               " is not supported yet (supported: " + formatCodeList() + ", " +
                               std::to_string(kFormatByExtension) + " (by extension))");
 }

@@ -58,8 +58,8 @@ std::string formatCodeList();
 // Writes through writeFileAtomically; throws std::runtime_error naming `path`.
 void writeMeshFile(const std::string& path, const MeshFormat& format, const Model& model,
                    const Mesh& mesh, const MeshWriteOptions& options);
-// Reads with the format's reader; throws MshReadError-like errors of that format, or
-// std::runtime_error when the file cannot be opened.
+// Reads with the format's reader; throws std::runtime_error when the file cannot be opened,
+// and the reader's error (MshReadError for MSH) when its content is malformed.
 void readMeshFile(const std::string& path, const MeshFormat& format, Model& model, Mesh& mesh);
 
 }  // namespace geomesh
