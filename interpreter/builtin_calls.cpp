@@ -1,4 +1,5 @@
-// Built-in functions (math, strings, lists, queries) and constants (Pi, newp, ...).
+// Built-in functions: the registry's lookup and the list and query families; constants (Pi,
+// newp, ...).
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -7,7 +8,6 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "grammar/keywords.h"
 #include "interpreter/script_interpreter.h"
 #include "api/session.h"
 #include "stdlib/format.h"
@@ -16,29 +16,21 @@
 
 namespace geomesh {
 
+FunctionRegistry Interpreter::builtinFunctions() {
+  const std::span<const ScriptFunction> families[] = {stringFunctions(), listFunctions(),
+                                                      queryFunctions(), structFunctions()};
+  return FunctionRegistry(families);
+}
+
 Value Interpreter::callFunction(const ast::Expr& call) {
   const std::string& name = call.text;
-  if (isMathFunction(name)) {
-    try {
-      // A one-argument function applies item by item to a list: Abs(a[]).
-      if (call.args.size() == 1) {
-        Value arg = evaluate(*call.args[0]);
-        if (arg.kind() == Value::Kind::List) {
-          for (double& x : arg.numbers()) x = *callMathFunction(name, std::span(&x, 1), random_);
-          return arg;
-        }
-      }
-      std::vector<double> args;
-      for (const auto& arg : call.args) args.push_back(evaluateNumber(*arg));
-      return Value::number(*callMathFunction(name, args, random_));
-    } catch (const std::invalid_argument& error) {
-      fail(call.loc, error.what());
-    }
+  if (const BuiltinFunction* function = functions_.find(name)) {
+    if (function->math) return callMath(*function->math, call);
+    const ScriptFunction& script = *function->script;
+    if (call.args.size() < script.minArgs || call.args.size() > script.maxArgs)
+      fail(call.loc, wrongArgumentCount(script, call.args.size()));
+    return script.body(*this, call);
   }
-  if (auto value = callStringFunction(call)) return *value;
-  if (auto value = callListFunction(call)) return *value;
-  if (auto value = callQueryFunction(call)) return *value;
-  if (auto value = callStructFunction(call)) return *value;
   // The old list syntax: a() is the whole list a[], a(i) its item a[i].
   if (auto it = variables_.find(name); it != variables_.end() && call.args.size() <= 1) {
     const Value& list = it->second;
@@ -51,8 +43,26 @@ Value Interpreter::callFunction(const ast::Expr& call) {
     const auto at = clampedInteger<std::size_t>(index);
     return list.isText() ? Value::string(list.strings()[at]) : Value::number(list.numbers()[at]);
   }
-  std::vector<std::string> known(functionNames().begin(), functionNames().end());
-  fail(call.loc, "unknown function '" + name + "'" + didYouMean(name, known));
+  fail(call.loc, "unknown function '" + name + "'" + didYouMean(name, functions_.names()));
+}
+
+// The arguments of a numeric function are numbers, counted once evaluated; a one-argument
+// function applies item by item to a list: Abs(a[]).
+Value Interpreter::callMath(const MathFunction& function, const ast::Expr& call) {
+  try {
+    if (call.args.size() == 1) {
+      Value arg = evaluate(*call.args[0]);
+      if (arg.kind() == Value::Kind::List) {
+        for (double& x : arg.numbers()) x = applyMathFunction(function, std::span(&x, 1), random_);
+        return arg;
+      }
+    }
+    std::vector<double> args;
+    for (const auto& arg : call.args) args.push_back(evaluateNumber(*arg));
+    return Value::number(applyMathFunction(function, args, random_));
+  } catch (const std::invalid_argument& error) {
+    fail(call.loc, error.what());
+  }
 }
 
 std::string Interpreter::format(const ast::ExprList& args, const SourceLocation& where) {
@@ -72,97 +82,126 @@ std::string Interpreter::format(const ast::ExprList& args, const SourceLocation&
   }
 }
 
-std::optional<Value> Interpreter::callListFunction(const ast::Expr& call) {
-  const std::string& name = call.text;
-  if (name == "LinSpace" || name == "LogSpace") {
-    if (call.args.size() != 3) fail(call.loc, "'" + name + "' takes 3 arguments");
-    const double a = evaluateNumber(*call.args[0]), b = evaluateNumber(*call.args[1]);
-    const double count = evaluateNumber(*call.args[2]);
-    if (count > 10'000'000) fail(call.args[2]->loc, "'" + name + "' asks for too many values");
+namespace {
+
+using Call = const ast::Expr&;
+constexpr std::size_t kAnyCount = ScriptFunction::kAnyCount;
+
+}  // namespace
+
+// LinSpace(a, b, n), LogSpace(a, b, n), Find(list, items), ListFromFile("file"), Unique(list).
+std::span<const ScriptFunction> Interpreter::listFunctions() {
+  // n values from a to b, evenly spaced, or their powers of ten
+  static constexpr auto spaced = [](Interpreter& in, Call call, bool logarithmic) {
+    const std::string& name = call.text;
+    const double a = in.evaluateNumber(*call.args[0]), b = in.evaluateNumber(*call.args[1]);
+    const double count = in.evaluateNumber(*call.args[2]);
+    if (count > 10'000'000) in.fail(call.args[2]->loc, "'" + name + "' asks for too many values");
     const int n = clampedInteger<int>(count);
-    return Value::list(name == "LinSpace" ? linSpace(a, b, n) : logSpace(a, b, n));
-  }
-  if (name == "Find") {
-    if (call.args.size() != 2) fail(call.loc, "Find takes 2 lists");
-    const std::vector<double> in = evaluateNumbers(*call.args[0]);
-    double found = 0;
-    for (double x : evaluateNumbers(*call.args[1]))
-      if (std::find(in.begin(), in.end(), x) != in.end()) ++found;
-    return Value::number(found);
-  }
-  if (name == "ListFromFile") {
-    if (call.args.size() != 1) fail(call.loc, "ListFromFile takes a file name");
-    std::filesystem::path path = evaluateString(*call.args[0]);
-    if (path.is_relative()) path = std::filesystem::path(directoryOf(call.loc.file)) / path;
-    std::error_code ignored;
-    std::ifstream in;
-    if (std::filesystem::is_regular_file(path, ignored)) in.open(path);
-    if (!in.is_open()) fail(call.args[0]->loc, "cannot open '" + path.string() + "'");
-    std::vector<double> values;
-    for (double x; in >> x;) values.push_back(x);
-    if (!in.eof())
-      fail(call.args[0]->loc, "'" + path.string() + "' holds something other than numbers");
-    return Value::list(std::move(values));
-  }
-  if (name == "Unique") {
-    std::vector<double> values = evaluateNumbers(call.args);
-    std::sort(values.begin(), values.end());
-    values.erase(std::unique(values.begin(), values.end()), values.end());
-    return Value::list(std::move(values));
-  }
-  return std::nullopt;
+    return Value::list(logarithmic ? logSpace(a, b, n) : linSpace(a, b, n));
+  };
+  static constexpr ScriptFunction kRows[] = {
+      {"LinSpace", 3, 3, "'LinSpace' takes 3 arguments",
+       [](Interpreter& in, Call call) { return spaced(in, call, false); }},
+      {"LogSpace", 3, 3, "'LogSpace' takes 3 arguments",
+       [](Interpreter& in, Call call) { return spaced(in, call, true); }},
+      {"Find", 2, 2, "Find takes 2 lists",
+       [](Interpreter& in, Call call) {
+         // how many of the second list's items are in the first
+         const std::vector<double> items = in.evaluateNumbers(*call.args[0]);
+         double found = 0;
+         for (double x : in.evaluateNumbers(*call.args[1]))
+           if (std::find(items.begin(), items.end(), x) != items.end()) ++found;
+         return Value::number(found);
+       }},
+      {"ListFromFile", 1, 1, "ListFromFile takes a file name",
+       [](Interpreter& in, Call call) { return in.listFromFile(call); }},
+      {"Unique", 0, kAnyCount, "",
+       [](Interpreter& in, Call call) {
+         std::vector<double> values = in.evaluateNumbers(call.args);
+         std::sort(values.begin(), values.end());
+         values.erase(std::unique(values.begin(), values.end()), values.end());
+         return Value::list(std::move(values));
+       }},
+  };
+  return kRows;
 }
 
-std::optional<Value> Interpreter::callQueryFunction(const ast::Expr& call) {
-  const std::string& name = call.text;
+// The numbers of a text file, relative to the script's directory.
+Value Interpreter::listFromFile(const ast::Expr& call) {
+  std::filesystem::path path = evaluateString(*call.args[0]);
+  if (path.is_relative()) path = std::filesystem::path(directoryOf(call.loc.file)) / path;
+  std::error_code ignored;
+  std::ifstream in;
+  if (std::filesystem::is_regular_file(path, ignored)) in.open(path);
+  if (!in.is_open()) fail(call.args[0]->loc, "cannot open '" + path.string() + "'");
+  std::vector<double> values;
+  for (double x; in >> x;) values.push_back(x);
+  if (!in.eof())
+    fail(call.args[0]->loc, "'" + path.string() + "' holds something other than numbers");
+  return Value::list(std::move(values));
+}
+
+// Exists(name), FileExists("file"), GetNumber("name"[, default]), GetString("name"[, default]),
+// GetValue("prompt", default). GetNumber and GetString read parameters (DefineConstant's Name,
+// SetNumber, -setnumber), never options: that is Gmsh's behaviour too.
+std::span<const ScriptFunction> Interpreter::queryFunctions() {
+  static constexpr ScriptFunction kRows[] = {
+      {"Exists", 1, 1, "Exists takes a variable name or a Struct member",
+       [](Interpreter& in, Call call) { return in.exists(call); }},
+      {"FileExists", 1, 1, "FileExists takes a file name",
+       [](Interpreter& in, Call call) {
+         std::filesystem::path p = in.evaluateString(*call.args[0]);
+         if (p.is_relative()) p = std::filesystem::path(in.directoryOf(call.loc.file)) / p;
+         std::error_code ignored;
+         return Value::number(std::filesystem::exists(p, ignored) ? 1 : 0);
+       }},
+      {"GetNumber", 1, 2, "GetNumber takes 1 or 2 arguments",
+       [](Interpreter& in, Call call) {
+         const auto& args = call.args;
+         const std::string key = in.evaluateString(*args[0]);
+         if (auto it = in.parameterNumbers_.find(key); it != in.parameterNumbers_.end())
+           return Value::number(it->second);
+         return Value::number(args.size() > 1 ? in.evaluateNumber(*args[1]) : 0);
+       }},
+      {"GetString", 1, 2, "GetString takes 1 or 2 arguments",
+       [](Interpreter& in, Call call) {
+         const auto& args = call.args;
+         const std::string key = in.evaluateString(*args[0]);
+         if (auto it = in.parameterStrings_.find(key); it != in.parameterStrings_.end())
+           return Value::string(it->second);
+         return Value::string(args.size() > 1 ? in.evaluateString(*args[1]) : "");
+       }},
+      {"GetValue", 2, 2, "GetValue takes a prompt and a default value",
+       [](Interpreter& in, Call call) { return in.getValue(call); }},
+  };
+  return kRows;
+}
+
+// Exists(x) is 1 when x is a variable, list item or Struct member; as in Gmsh, the name of a
+// Struct (no variable) answers with the Struct's tag.
+Value Interpreter::exists(const ast::Expr& call) {
   const auto& args = call.args;
-  if (name == "Exists") {
-    const bool named = args.size() == 1 && (args[0]->kind == ast::ExprKind::Variable ||
-                                            args[0]->kind == ast::ExprKind::Member);
-    if (!named) fail(call.loc, "Exists takes a variable name or a Struct member");
-    const auto value = valueIfDefined(*args[0]);
-    if (!value) return Value::number(0);
-    // As in Gmsh, the name of a Struct (no variable) answers with the Struct's tag.
-    const bool structName = args[0]->kind == ast::ExprKind::Variable &&
-                            !variables_.contains(resolveName(args[0]->name));
-    return structName ? *value : Value::number(1);
+  const bool named =
+      args[0]->kind == ast::ExprKind::Variable || args[0]->kind == ast::ExprKind::Member;
+  if (!named) fail(call.loc, "Exists takes a variable name or a Struct member");
+  const auto value = valueIfDefined(*args[0]);
+  if (!value) return Value::number(0);
+  const bool structName = args[0]->kind == ast::ExprKind::Variable &&
+                          !variables_.contains(resolveName(args[0]->name));
+  return structName ? *value : Value::number(1);
+}
+
+// A question for an interactive user: in a batch run, the prompt is shown and the default is
+// the answer.
+Value Interpreter::getValue(const ast::Expr& call) {
+  const std::string prompt = evaluateString(*call.args[0]);
+  const double answer = evaluateNumber(*call.args[1]);
+  if (session_.options().number("General.Verbosity") >= 3) {
+    const std::vector<FormatArgument> shown{answer};
+    session_.out() << prompt << " (default=" << formatPrintf("%g", shown) << "): ";
   }
-  if (name == "FileExists") {
-    if (args.size() != 1) fail(call.loc, "FileExists takes a file name");
-    std::filesystem::path p = evaluateString(*args[0]);
-    if (p.is_relative()) p = std::filesystem::path(directoryOf(call.loc.file)) / p;
-    std::error_code ignored;
-    return Value::number(std::filesystem::exists(p, ignored) ? 1 : 0);
-  }
-  // GetNumber and GetString read parameters (DefineConstant's Name, SetNumber, -setnumber),
-  // never options: that is Gmsh's behaviour too.
-  if (name == "GetNumber") {
-    if (args.empty() || args.size() > 2) fail(call.loc, "GetNumber takes 1 or 2 arguments");
-    const std::string key = evaluateString(*args[0]);
-    if (auto it = parameterNumbers_.find(key); it != parameterNumbers_.end())
-      return Value::number(it->second);
-    return Value::number(args.size() > 1 ? evaluateNumber(*args[1]) : 0);
-  }
-  if (name == "GetString") {
-    if (args.empty() || args.size() > 2) fail(call.loc, "GetString takes 1 or 2 arguments");
-    const std::string key = evaluateString(*args[0]);
-    if (auto it = parameterStrings_.find(key); it != parameterStrings_.end())
-      return Value::string(it->second);
-    return Value::string(args.size() > 1 ? evaluateString(*args[1]) : "");
-  }
-  if (name == "GetValue") {
-    // A question for an interactive user: in a batch run, the prompt is shown and the
-    // default is the answer.
-    if (args.size() != 2) fail(call.loc, "GetValue takes a prompt and a default value");
-    const std::string prompt = evaluateString(*args[0]);
-    const double answer = evaluateNumber(*args[1]);
-    if (session_.options().number("General.Verbosity") >= 3) {
-      const std::vector<FormatArgument> shown{answer};
-      session_.out() << prompt << " (default=" << formatPrintf("%g", shown) << "): ";
-    }
-    return Value::number(answer);
-  }
-  return std::nullopt;
+  return Value::number(answer);
 }
 
 std::optional<Value> Interpreter::builtinConstant(std::string_view name) {

@@ -1,5 +1,5 @@
-// Statements introduced by keywords: Printf, Include, Exit, options, and everything that is
-// recognised but not supported (reported with a warning at its location).
+// Statements of the language itself: Printf, Error, Warning, SetFactory, SetNumber, SystemCall;
+// and options (General.X = ...).
 #include <cstdlib>
 #include <cmath>
 #include <fstream>
@@ -13,29 +13,6 @@
 namespace geomesh {
 
 namespace {
-
-std::string joined(const std::vector<std::string>& words) {
-  std::string text;
-  for (const auto& word : words) text += (text.empty() ? "" : " ") + word;
-  return text;
-}
-
-// How a warning names a command: "Transfinite Curve", "Point In Surface".
-std::string commandName(const ast::CommandStmt& command) {
-  std::string name = joined(command.words);
-  if (!command.tail.empty() && command.tail[0].word == "In" && command.tail[0].value)
-    name += " In " + joined(command.tail[0].value->words);
-  return name;
-}
-
-// Statements that only concern the graphical interface or post-processing: batch runs
-// ignore them.
-bool isInterfaceOnly(const std::string& word) {
-  for (const char* w : {"Draw", "Hide", "Show", "Color", "View", "Sleep", "SetChanged", "Print",
-                        "BoundingBox", "PostProcessing", "Solver"})
-    if (word == w) return true;
-  return false;
-}
 
 // Options of post-processing, printing and solvers: they change nothing in a batch mesh run.
 bool isInterfaceOption(std::string_view path) {
@@ -59,40 +36,23 @@ double combine(double old, double operand, const std::string& op) {
 
 }  // namespace
 
-void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLocation& where) {
-  const std::string& head = command.words.front();
-  if (head == "Printf" && command.words.size() == 1) return executePrintf(command, where);
-  if (head == "Include" && command.words.size() == 1) return executeInclude(command, where);
-  if (head == "Struct" && command.words.size() == 1) return executeStructStatement(command, where);
-  if (head == "Exit") throw ScriptExit();
-  if (head == "Abort") throw AbortScript();
-  if ((head == "Error" || head == "Warning") && command.argStyle == ast::CommandStmt::Args::Paren &&
-      !command.args.empty()) {
-    const std::string message = command.args.size() == 1 ? evaluateString(*command.args[0])
-                                                         : format(command.args, where);
-    if (head == "Error") fail(where, message);
-    return warn(where, message);
-  }
-  if (head == "SetNumber" || head == "SetString") return executeSetter(command, where);
-  if (head == "System" || head == "SystemCall" || head == "NonBlockingSystem" ||
-      head == "NonBlockingSystemCall")
-    return executeSystemCall(command, where);
-  if (executeModelCommand(command, where)) return;
-  if (executeMeshSize(command, where)) return;
-  if (executeGeometry(command, where)) return;
-  if (executeShapeCommand(command, where)) return;
-  if (executeMeshConstraint(command, where)) return;
-  if (isInterfaceOnly(head)) {
-    session_.log().debug(where.file + ":" + std::to_string(where.line) + ": '" +
-                         joined(command.words) + "' has no effect in batch mode");
-    return;
-  }
-  if (head == "SetFactory" && command.args.size() == 1) {
+// Error(...) and Warning(...) report a message of the script's at the statement.
+void Interpreter::executeMessage(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.argStyle != ast::CommandStmt::Args::Paren || command.args.empty())
+    return unsupportedStatement(command, where);
+  const std::string message = command.args.size() == 1 ? evaluateString(*command.args[0])
+                                                       : format(command.args, where);
+  if (command.words.front() == "Error") fail(where, message);
+  warn(where, message);
+}
+
+// SetFactory("Built-in"); is what every script already runs with; other kernels warn.
+void Interpreter::executeSetFactory(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.args.size() == 1) {
     const std::string factory = evaluateString(*command.args[0]);
     if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
   }
-  session_.noteIgnoredStatement(where);
-  warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
+  unsupportedStatement(command, where);
 }
 
 // SystemCall "command"; runs a shell command, only when the user allowed it on the command

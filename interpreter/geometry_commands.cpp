@@ -1,5 +1,5 @@
 // Geometry statements that map onto the built-in factory: Point, Line, Curve Loop, Plane
-// Surface, Surface Loop, Volume, Physical groups; and shapes used as values (Point{t}).
+// Surface, Surface Loop, Volume, Physical groups.
 #include <cmath>
 
 #include "interpreter/script_interpreter.h"
@@ -12,8 +12,13 @@ namespace {
 
 using Words = std::vector<std::string>;
 
+// Entities are defined as in Point(1) = {0, 0, 0};
+bool isDefinition(const ast::CommandStmt& command) {
+  return command.argStyle == ast::CommandStmt::Args::Paren && command.value && command.op == "=";
+}
+
+// Physical Point, Physical Line or Curve, Physical Surface, Physical Volume.
 int physicalDimension(const Words& words) {
-  if (words.size() != 2 || words[0] != "Physical") return -1;
   if (words[1] == "Point") return 0;
   if (words[1] == "Line" || words[1] == "Curve") return 1;
   if (words[1] == "Surface") return 2;
@@ -48,26 +53,11 @@ int Interpreter::entityTag(const ast::CommandStmt& command, const SourceLocation
   return clampedInteger<int>(tag);
 }
 
-bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceLocation& where) {
+// Line(t) = {..}; and the other entities given by their tag and a list of tags: Curve Loop,
+// Plane Surface, Surface Loop, Volume, Ellipse, Spline, BSpline, Bezier, Surface, Ruled Surface.
+void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLocation& where) {
   const Words& w = command.words;
-  if (command.argStyle != ast::CommandStmt::Args::Paren || !command.value) return false;
-  const int physical = physicalDimension(w);
-  if (physical >= 0) {
-    definePhysical(command, physical, where);
-    return true;
-  }
-  if (command.op != "=") return false;
-  if (w == Words{"Circle"}) return defineCircleArc(command, where);
-  if (w == Words{"Point"}) {
-    definePoint(command, where);
-    return true;
-  }
-  const bool known =
-      w == Words{"Line"} || w == Words{"Curve", "Loop"} || w == Words{"Line", "Loop"} ||
-      w == Words{"Plane", "Surface"} || w == Words{"Surface", "Loop"} || w == Words{"Volume"} ||
-      w == Words{"Ellipse"} || w == Words{"Spline"} || w == Words{"BSpline"} ||
-      w == Words{"Bezier"} || w == Words{"Surface"} || w == Words{"Ruled", "Surface"};
-  if (!known) return false;
+  if (!isDefinition(command)) return embedEntities(command, where);
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
   const std::vector<int> tags = entityTags(value);
@@ -109,10 +99,10 @@ bool Interpreter::executeGeometry(const ast::CommandStmt& command, const SourceL
     const int dim = w.back() == "Surface" ? 2 : w.back() == "Volume" ? 3 : 1;
     session_.recordOrigin({dim, tag}, where);
   }
-  return true;
 }
 
 void Interpreter::definePoint(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!isDefinition(command)) return embedEntities(command, where);
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
   std::vector<double> xs = evaluateNumbers(value);
@@ -128,9 +118,10 @@ void Interpreter::definePoint(const ast::CommandStmt& command, const SourceLocat
 
 // Circle(tag) = {start, center, end}: an arc of at most half a turn. Other forms (the
 // OpenCASCADE {x, y, z, r} circle) are not supported by the built-in kernel.
-bool Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where) {
+void Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!isDefinition(command)) return unsupportedStatement(command, where);
   const int tag = entityTag(command, where);
-  if (evaluateNumbers(*command.value).size() != 3) return false;
+  if (evaluateNumbers(*command.value).size() != 3) return unsupportedStatement(command, where);
   const std::vector<int> points = entityTags(*command.value);
   try {
     session_.geo().addCircleArc(tag, points[0], points[1], points[2]);
@@ -138,7 +129,12 @@ bool Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceL
     fail(where, error.what());
   }
   session_.recordOrigin({1, tag}, where);
-  return true;
+}
+
+void Interpreter::executePhysical(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.argStyle != ast::CommandStmt::Args::Paren || !command.value)
+    return unsupportedStatement(command, where);
+  definePhysical(command, physicalDimension(command.words), where);
 }
 
 // Physical X(tag) = {..};  Physical X("name") = {..};  Physical X("name", tag) = {..};

@@ -36,7 +36,8 @@ void runScriptText(Session& session, const std::string& text, const std::string&
 
 // Values given by -setnumber / -setstring are variables before the script starts: the
 // script reads them directly, and DefineConstant leaves them as they are.
-Interpreter::Interpreter(Session& session) : session_(session) {
+Interpreter::Interpreter(Session& session)
+    : session_(session), functions_(builtinFunctions()) {
   for (const auto& [name, value] : session.numberOverrides())
     variables_[name] = Value::number(value);
   for (const auto& [name, value] : session.stringOverrides())

@@ -34,48 +34,48 @@ std::optional<TransfiniteSurface::Arrangement> arrangementNamed(const std::strin
 
 }  // namespace
 
-bool Interpreter::executeMeshConstraint(const ast::CommandStmt& command,
-                                        const SourceLocation& where) {
-  const std::vector<std::string>& w = command.words;
-  if (w.size() == 2 && w[0] == "Transfinite" && command.shape) {
-    if (w[1] == "Curve" || w[1] == "Line") return defineTransfiniteCurve(command, where), true;
-    if (w[1] == "Surface") return defineTransfiniteSurface(command, where), true;
-    return false;
-  }
-  if (w.size() == 2 && w[0] == "Recombine" && w[1] == "Surface" && command.shape) {
-    const double angle = command.value ? evaluateNumber(*command.value) : 45;
-    for (int tag : shapeTags(*command.shape, 2))
-      session_.model().meshConstraints().recombinedSurfaces[std::abs(tag)] = angle;
-    return true;
-  }
-  if (w.size() == 2 && w[0] == "MeshAlgorithm" && w[1] == "Surface" && command.shape &&
-      command.value) {
-    const int algorithm = static_cast<int>(std::lround(evaluateNumber(*command.value)));
-    for (int tag : shapeTags(*command.shape, 2))
-      session_.model().meshConstraints().surfaceAlgorithms[std::abs(tag)] = algorithm;
-    return true;
-  }
-  if (w.size() == 1 && w[0] == "Field" && command.argStyle == ast::CommandStmt::Args::Bracket &&
-      command.args.size() == 1 && command.value) {
-    const int tag = static_cast<int>(std::lround(evaluateNumber(*command.args[0])));
-    // The type is a bare word (Field[1] = Distance;), sometimes a string.
-    const ast::Expr& rhs = *command.value;
-    const std::string type = rhs.kind == ast::ExprKind::String     ? rhs.text
-                             : rhs.kind == ast::ExprKind::Variable ? rhs.name.base
-                                                                   : evaluateString(rhs);
-    session_.model().meshConstraints().sizeFields[tag] = SizeFieldDefinition{type};
-    return true;
-  }
-  if (w.size() == 2 && w[0] == "Background" && w[1] == "Field" && command.value) {
-    session_.model().meshConstraints().backgroundField =
-        static_cast<int>(std::lround(evaluateNumber(*command.value)));
-    return true;
-  }
-  return false;
+// Recombine Surface{..} [= angle];
+void Interpreter::recombineSurfaces(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!command.shape) return unsupportedStatement(command, where);
+  const double angle = command.value ? evaluateNumber(*command.value) : 45;
+  for (int tag : shapeTags(*command.shape, 2))
+    session_.model().meshConstraints().recombinedSurfaces[std::abs(tag)] = angle;
+}
+
+// MeshAlgorithm Surface{..} = algorithm;
+void Interpreter::setSurfaceAlgorithm(const ast::CommandStmt& command,
+                                      const SourceLocation& where) {
+  if (!command.shape || !command.value) return unsupportedStatement(command, where);
+  const int algorithm = static_cast<int>(std::lround(evaluateNumber(*command.value)));
+  for (int tag : shapeTags(*command.shape, 2))
+    session_.model().meshConstraints().surfaceAlgorithms[std::abs(tag)] = algorithm;
+}
+
+// Field[n] = Type;
+void Interpreter::defineField(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.argStyle != ast::CommandStmt::Args::Bracket || command.args.size() != 1 ||
+      !command.value)
+    return unsupportedStatement(command, where);
+  const int tag = static_cast<int>(std::lround(evaluateNumber(*command.args[0])));
+  // The type is a bare word (Field[1] = Distance;), sometimes a string.
+  const ast::Expr& rhs = *command.value;
+  const std::string type = rhs.kind == ast::ExprKind::String     ? rhs.text
+                           : rhs.kind == ast::ExprKind::Variable ? rhs.name.base
+                                                                 : evaluateString(rhs);
+  session_.model().meshConstraints().sizeFields[tag] = SizeFieldDefinition{type};
+}
+
+// Background Field = n;
+void Interpreter::setBackgroundField(const ast::CommandStmt& command,
+                                     const SourceLocation& where) {
+  if (!command.value) return unsupportedStatement(command, where);
+  session_.model().meshConstraints().backgroundField =
+      static_cast<int>(std::lround(evaluateNumber(*command.value)));
 }
 
 void Interpreter::defineTransfiniteCurve(const ast::CommandStmt& command,
                                          const SourceLocation& where) {
+  if (!command.shape) return unsupportedStatement(command, where);
   if (!command.value) fail(where, "Transfinite Curve needs a number of nodes: {..} = n");
   TransfiniteCurve law;
   const double nodes = evaluateNumber(*command.value);
@@ -101,6 +101,7 @@ void Interpreter::defineTransfiniteCurve(const ast::CommandStmt& command,
 
 void Interpreter::defineTransfiniteSurface(const ast::CommandStmt& command,
                                            const SourceLocation& where) {
+  if (!command.shape) return unsupportedStatement(command, where);
   TransfiniteSurface surface;
   if (command.value) surface.corners = entityTags(*command.value);
   for (const ast::TailItem& item : command.tail) {

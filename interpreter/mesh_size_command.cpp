@@ -7,12 +7,9 @@
 
 namespace geomesh {
 
-bool Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceLocation& where) {
-  if (!command.shape || command.op != "=" || !command.value) return false;
-  const std::vector<std::string>& words = command.shape->words;
-  const bool isMeshSize = words == std::vector<std::string>{"MeshSize"} ||
-                          words == std::vector<std::string>{"Characteristic", "Length"};
-  if (!isMeshSize) return false;
+void Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!command.shape || command.op != "=" || !command.value)
+    return unsupportedStatement(command, where);
   if (command.shape->parts.size() != 1 || command.shape->parts[0].isBlock)
     fail(where, "MeshSize takes point tags, as in MeshSize{1, 2} = 0.1;");
   std::vector<int> points;
@@ -47,7 +44,6 @@ bool Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceL
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
-  return true;
 }
 
 }  // namespace geomesh

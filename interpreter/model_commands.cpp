@@ -19,45 +19,62 @@ std::string extensionOf(const std::filesystem::path& path) {
   return path.extension().string();
 }
 
+// Mesh 2; Save "file"; Merge "file"; Delete name; take one bare argument.
+bool hasBareArgument(const ast::CommandStmt& command) {
+  return command.argStyle == ast::CommandStmt::Args::Bare && command.args.size() == 1;
+}
+
 }  // namespace
 
-bool Interpreter::executeModelCommand(const ast::CommandStmt& command,
-                                      const SourceLocation& where) {
-  const auto& w = command.words;
-  const bool bare = command.argStyle == ast::CommandStmt::Args::Bare && command.args.size() == 1;
-  if (w.size() == 1 && w[0] == "Mesh" && bare) {
-    meshNow(*command.args[0], where);
-    return true;
+void Interpreter::executeMesh(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!hasBareArgument(command)) return unsupportedStatement(command, where);
+  meshNow(*command.args[0], where);
+}
+
+void Interpreter::executeSave(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!hasBareArgument(command)) return unsupportedStatement(command, where);
+  saveFile(command, where);
+}
+
+// Print "file"; saves as Save does; Print's other forms drive the graphical interface.
+void Interpreter::executePrint(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!hasBareArgument(command)) return skipInBatch(command, where);
+  saveFile(command, where);
+}
+
+void Interpreter::executeMerge(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!hasBareArgument(command)) return unsupportedStatement(command, where);
+  mergeFile(command, where);
+}
+
+void Interpreter::executeNewModel(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!command.args.empty()) return unsupportedStatement(command, where);
+  startNewModel();
+}
+
+// SyncModel; the built-in kernel's entities reach the model before every use: nothing is left
+// to do. RenumberMeshNodes; RenumberMeshElements; written meshes are always numbered
+// consecutively from 1: nothing to renumber.
+void Interpreter::executeAlreadyDone(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!command.args.empty()) unsupportedStatement(command, where);
+}
+
+void Interpreter::executeCoherenceMesh(const ast::CommandStmt& command,
+                                       const SourceLocation& where) {
+  if (!command.args.empty()) return unsupportedStatement(command, where);
+  // A generated mesh shares the nodes of common boundaries: there are no duplicates to
+  // merge. A mesh read from a file keeps whatever it holds.
+  if (session_.meshFromFile())
+    warn(where, "'Coherence Mesh' on a mesh read from a file is not supported yet; ignored");
+}
+
+// Delete Model; Delete name; and Delete { shapes }.
+void Interpreter::executeDelete(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (hasBareArgument(command) && !command.shape) {
+    if (!deleteByName(*command.args[0], where)) unsupportedStatement(command, where);
+    return;
   }
-  if (w.size() == 1 && (w[0] == "Save" || w[0] == "Print") && bare) {
-    saveFile(command, where);
-    return true;
-  }
-  if (w.size() == 1 && w[0] == "Merge" && bare) {
-    mergeFile(command, where);
-    return true;
-  }
-  if (w.size() == 1 && (w[0] == "NewModel" || w[0] == "SyncModel") && command.args.empty()) {
-    // The built-in kernel's entities reach the model before every use: SyncModel has
-    // nothing left to do.
-    if (w[0] == "NewModel") startNewModel();
-    return true;
-  }
-  if (w.size() == 1 && (w[0] == "RenumberMeshNodes" || w[0] == "RenumberMeshElements") &&
-      command.args.empty()) {
-    // Written meshes are always numbered consecutively from 1: nothing to renumber.
-    return true;
-  }
-  if (w == std::vector<std::string>{"Coherence", "Mesh"} && command.args.empty()) {
-    // A generated mesh shares the nodes of common boundaries: there are no duplicates to
-    // merge. A mesh read from a file keeps whatever it holds.
-    if (session_.meshFromFile())
-      warn(where, "'Coherence Mesh' on a mesh read from a file is not supported yet; ignored");
-    return true;
-  }
-  if (w.size() == 1 && w[0] == "Delete" && bare && !command.shape)
-    return deleteByName(*command.args[0], where);
-  return false;
+  deleteShapes(command, where);
 }
 
 // Synchronizes the model, reporting at `where` what prevents it.

@@ -4,11 +4,13 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "grammar/ast.h"
+#include "interpreter/function_registry.h"
 #include "interpreter/value.h"
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
@@ -22,15 +24,25 @@ class Session;
 // Walks the AST of a script and its Includes, keeping the variables, macros and source texts
 // of one run. The member functions are spread over files by concern: statements
 // (interpreter.cpp), assignments (assignments.cpp), expressions (evaluator.cpp,
-// operators.cpp), built-in functions (builtin_calls.cpp, string_functions.cpp), commands
-// and options (commands.cpp), entity definitions (geometry_commands.cpp), operations on
-// shapes (shape_operations.cpp), parameters (parameters.cpp).
+// operators.cpp), built-in functions (builtin_calls.cpp, string_functions.cpp, structs.cpp, found
+// through function_registry.h), commands and options (commands.cpp, each found through the
+// statement table of statement_table.cpp), entity definitions (geometry_commands.cpp),
+// operations on shapes (shape_operations.cpp), parameters (parameters.cpp).
 class Interpreter {
  public:
   explicit Interpreter(Session& session);
 
   void runFile(const std::string& path);
   void runText(const std::string& text, const std::string& name);
+
+  // Every built-in function: the math library's and the interpreter's families.
+  static FunctionRegistry builtinFunctions();
+  // The words of each row of the statement table: "Point", "Physical Surface", and "Sleep ..."
+  // for a head followed by any words. For tests: every command keyword has its place.
+  static std::vector<std::string_view> statementPatterns();
+  // Command keywords that never start a statement: they continue one (Loop in Curve Loop) or
+  // appear inside expressions and blocks (Layers, PointsOf).
+  static std::span<const std::string_view> keywordsStartingNoStatement();
 
  private:
   struct AbortScript {};  // thrown by `Abort;`
@@ -68,21 +80,44 @@ class Interpreter {
   Value shapeValue(const ast::Expr& expr);
   Value physicalQuery(const ast::Expr& expr, int dim);
 
-  // built-in functions and constants
+  // built-in functions and constants; each family is a table of rows (name, arity, body)
   Value callFunction(const ast::Expr& call);
-  std::optional<Value> callStringFunction(const ast::Expr& call);
-  std::optional<Value> callListFunction(const ast::Expr& call);
-  std::optional<Value> callQueryFunction(const ast::Expr& call);
+  Value callMath(const MathFunction& function, const ast::Expr& call);
+  static std::span<const ScriptFunction> stringFunctions();
+  static std::span<const ScriptFunction> listFunctions();
+  static std::span<const ScriptFunction> queryFunctions();
+  static std::span<const ScriptFunction> structFunctions();
+  std::vector<std::string> textPieces(const ast::Expr& call);
+  Value listFromFile(const ast::Expr& call);
+  Value exists(const ast::Expr& call);
+  Value getValue(const ast::Expr& call);
+  Value nameOfStruct(const ast::Expr& call);
   std::optional<Value> builtinConstant(std::string_view name);
   std::string format(const ast::ExprList& args, const SourceLocation& where);
 
-  // commands
+  // commands: executeCommand finds the statement's handler in the statement table
+  // (statement_table.cpp); every handler takes the command and its location.
+  using StatementHandler = void (Interpreter::*)(const ast::CommandStmt&, const SourceLocation&);
+  struct StatementRow {
+    std::string_view words;  // "Point", "Physical Surface"; "Exit ...": any words after Exit
+    StatementHandler handler;
+  };
+  static std::span<const StatementRow> statementTable();
+  static const StatementRow* findStatement(const std::vector<std::string>& words);
   void executeCommand(const ast::CommandStmt& command, const SourceLocation& where);
+  void unsupportedStatement(const ast::CommandStmt& command, const SourceLocation& where);
+  void skipInBatch(const ast::CommandStmt& command, const SourceLocation& where);
+  [[noreturn]] void exitScript(const ast::CommandStmt& command, const SourceLocation& where);
+  [[noreturn]] void abortScript(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeMessage(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeSetFactory(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrintf(const ast::CommandStmt& command, const SourceLocation& where);
-  bool executeGeometry(const ast::CommandStmt& command, const SourceLocation& where);
+  // entity definitions (geometry_commands.cpp)
+  void defineEntity(const ast::CommandStmt& command, const SourceLocation& where);
   void definePoint(const ast::CommandStmt& command, const SourceLocation& where);
   int physicalTagFor(int dim, const std::string& name) const;
-  bool defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where);
+  void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<int> entityTags(const ast::Expr& list);
@@ -99,10 +134,24 @@ class Interpreter {
   ExtrusionLayers extrusionLayers(const ast::ShapePart& block);
   std::vector<EntityId> extrude(const ast::Expr& shape);
   std::optional<std::vector<EntityId>> shapeOperation(const ast::Expr& shape);
-  bool executeShapeCommand(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeShapeOperation(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeCoherence(const ast::CommandStmt& command, const SourceLocation& where);
+  void executePeriodicSurface(const ast::CommandStmt& command, const SourceLocation& where);
+  void executePeriodic(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeDeletePhysicals(const ast::CommandStmt& command, const SourceLocation& where);
+  void deleteShapes(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeCompound(const ast::CommandStmt& command, const SourceLocation& where);
+  void embedEntities(const ast::CommandStmt& command, const SourceLocation& where);
 
   // the whole model and its mesh: Mesh n, Save, Merge, Delete Model, ... (model_commands.cpp)
-  bool executeModelCommand(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeMesh(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeSave(const ast::CommandStmt& command, const SourceLocation& where);
+  void executePrint(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeMerge(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeNewModel(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeAlreadyDone(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeCoherenceMesh(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeDelete(const ast::CommandStmt& command, const SourceLocation& where);
   void meshNow(const ast::Expr& dimension, const SourceLocation& where);
   void startNewModel();
   void synchronizeModel(const SourceLocation& where);
@@ -112,9 +161,12 @@ class Interpreter {
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);
 
   // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)
-  bool executeMeshConstraint(const ast::CommandStmt& command, const SourceLocation& where);
   void defineTransfiniteCurve(const ast::CommandStmt& command, const SourceLocation& where);
   void defineTransfiniteSurface(const ast::CommandStmt& command, const SourceLocation& where);
+  void recombineSurfaces(const ast::CommandStmt& command, const SourceLocation& where);
+  void setSurfaceAlgorithm(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineField(const ast::CommandStmt& command, const SourceLocation& where);
+  void setBackgroundField(const ast::CommandStmt& command, const SourceLocation& where);
   bool executeFieldOption(const ast::OptionAssignStmt& assign, const SourceLocation& where);
 
   // parameters (DefineConstant, DefineNumber, DefineString)
@@ -143,21 +195,21 @@ class Interpreter {
   Value memberValue(const ast::Expr& ref);
   void executeStructStatement(const ast::CommandStmt& command, const SourceLocation& where);
   std::optional<Value> valueIfDefined(const ast::Expr& expr);
-  std::optional<Value> callStructFunction(const ast::Expr& call);
 
   // diagnostics
   [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const;
   // Resource limits, from the options General.MaxLoopIterations / General.MaxMacroDepth.
   double maxLoopIterations() const;
   [[noreturn]] void failTooManyIterations(const SourceLocation& where) const;
-  // MeshSize{points} = size; (Characteristic Length{..}); false when not that statement.
-  bool executeMeshSize(const ast::CommandStmt& command, const SourceLocation& where);
+  // MeshSize{points} = size; (Characteristic Length{..})
+  void executeMeshSize(const ast::CommandStmt& command, const SourceLocation& where);
   void executeSystemCall(const ast::CommandStmt& command, const SourceLocation& where);
   void warn(const SourceLocation& where, const std::string& message) const;
   std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) const;
   std::string directoryOf(const std::string& file) const;
 
   Session& session_;
+  FunctionRegistry functions_;
   std::map<std::string, Value> variables_;
   std::map<std::string, const ast::StmtList*> macros_;
   std::map<std::string, double> parameterNumbers_;

@@ -177,65 +177,101 @@ std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr
   return std::nullopt;
 }
 
-bool Interpreter::executeShapeCommand(const ast::CommandStmt& command,
-                                      const SourceLocation& where) {
-  const Words& w = command.words;
-  GeoFactory& geo = session_.geo();
+// Translate{..}{ shapes }; Extrude{..}{ shapes }; Duplicata{ shapes }; ... as statements.
+void Interpreter::executeShapeOperation(const ast::CommandStmt& command,
+                                        const SourceLocation& where) {
+  if (command.shape && command.op.empty() && command.tail.empty() &&
+      shapeOperation(*command.shape))
+    return;
+  unsupportedStatement(command, where);
+}
+
+void Interpreter::executeCoherence(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (command.shape || !command.args.empty()) return unsupportedStatement(command, where);
   try {
-    if (w == Words{"Coherence"} && !command.shape && command.args.empty()) {
-      geo.coherence();
-      return true;
-    }
-    if (w == Words{"Periodic", "Surface"} && !command.shape && command.args.size() == 4) {
-      // The older form: Periodic Surface s {curves} = m {curves};
-      geo.setPeriodicByCurves(clampedInteger<int>(evaluateNumber(*command.args[0])),
-                              entityTags(*command.args[1]),
-                              clampedInteger<int>(evaluateNumber(*command.args[2])),
-                              entityTags(*command.args[3]));
-      return true;
-    }
-    if (w == Words{"Delete", "Physicals"} && !command.shape) {
-      // newreg keeps counting past the deleted groups, as in Gmsh.
-      for (const auto& [id, group] : geo.physicalGroups())
-        deletedPhysicalTag_ = std::max(deletedPhysicalTag_, id.tag);
-      geo.clearPhysicalGroups();
-      return true;
-    }
-    if (!command.shape) return false;
-    const ast::Expr& shape = *command.shape;
-    if (command.op.empty() && command.tail.empty() && shapeOperation(shape)) return true;
-    if ((w == Words{"Delete"} || w == Words{"Recursive", "Delete"}) && shape.parts.size() == 1 &&
-        shape.parts[0].isBlock) {
-      geo.remove(shapesIn(shape.parts[0]), w.size() == 2);
-      return true;
-    }
-    if (w.size() == 2 && w[0] == "Compound" && entityDimension({w[1]}) > 0) {
-      const int dim = entityDimension({w[1]});
-      geo.addCompound(dim, shapeTags(shape, dim));
-      return true;
-    }
-    if (!command.tail.empty() && command.tail[0].word == "In" && command.tail[0].value &&
-        command.tail.size() == 1) {
-      const ast::Expr& host = *command.tail[0].value;
-      const int dim = entityDimension(w), hostDim = entityDimension(host.words);
-      if (dim < 0 || hostDim < 0) return false;
-      const std::vector<int> tags = shapeTags(shape, dim);
-      for (int hostTag : shapeTags(host, hostDim)) geo.embed(dim, tags, hostDim, hostTag);
-      return true;
-    }
-    if (w.size() == 2 && w[0] == "Periodic" && command.value && command.tail.size() == 1 &&
-        command.tail[0].word.empty() && command.tail[0].value &&
-        isTransform(command.tail[0].value->words.at(0))) {
-      const int dim = entityDimension({w[1]});
-      if (dim < 1) return false;
-      geo.setPeriodic(dim, shapeTags(shape, dim), entityTags(*command.value),
-                      transformMap(*command.tail[0].value));
-      return true;
-    }
+    session_.geo().coherence();
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
-  return false;
+}
+
+// Periodic Surface{s} = {m} Translate{..}; or the older form Periodic Surface s {curves} = m
+// {curves};
+void Interpreter::executePeriodicSurface(const ast::CommandStmt& command,
+                                         const SourceLocation& where) {
+  if (command.shape || command.args.size() != 4) return executePeriodic(command, where);
+  try {
+    session_.geo().setPeriodicByCurves(clampedInteger<int>(evaluateNumber(*command.args[0])),
+                                       entityTags(*command.args[1]),
+                                       clampedInteger<int>(evaluateNumber(*command.args[2])),
+                                       entityTags(*command.args[3]));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Periodic Curve{slaves} = {masters} Translate{..}; (Rotate, ... any transformation)
+void Interpreter::executePeriodic(const ast::CommandStmt& command, const SourceLocation& where) {
+  const bool transformed = command.shape && command.value && command.tail.size() == 1 &&
+                           command.tail[0].word.empty() && command.tail[0].value &&
+                           isTransform(command.tail[0].value->words.at(0));
+  if (!transformed) return unsupportedStatement(command, where);
+  const int dim = entityDimension({command.words[1]});
+  try {
+    session_.geo().setPeriodic(dim, shapeTags(*command.shape, dim), entityTags(*command.value),
+                               transformMap(*command.tail[0].value));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+void Interpreter::executeDeletePhysicals(const ast::CommandStmt& command,
+                                         const SourceLocation& where) {
+  if (command.shape) return unsupportedStatement(command, where);
+  GeoFactory& geo = session_.geo();
+  // newreg keeps counting past the deleted groups, as in Gmsh.
+  for (const auto& [id, group] : geo.physicalGroups())
+    deletedPhysicalTag_ = std::max(deletedPhysicalTag_, id.tag);
+  geo.clearPhysicalGroups();
+}
+
+// Delete{ shapes }; Recursive Delete{ shapes }; (the latter also removes their boundaries)
+void Interpreter::deleteShapes(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!command.shape || command.shape->parts.size() != 1 || !command.shape->parts[0].isBlock)
+    return unsupportedStatement(command, where);
+  try {
+    session_.geo().remove(shapesIn(command.shape->parts[0]), command.words.size() == 2);
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Compound Curve{..}; Compound Surface{..}; meshed as one entity.
+void Interpreter::executeCompound(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!command.shape) return unsupportedStatement(command, where);
+  const int dim = entityDimension({command.words[1]});
+  try {
+    session_.geo().addCompound(dim, shapeTags(*command.shape, dim));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Point{..} In Surface{..}; Curve{..} In Volume{..}; ...: entities embedded in a host.
+void Interpreter::embedEntities(const ast::CommandStmt& command, const SourceLocation& where) {
+  const bool embedding = command.shape && command.tail.size() == 1 &&
+                         command.tail[0].word == "In" && command.tail[0].value;
+  const int dim = entityDimension(command.words);
+  const int hostDim = embedding ? entityDimension(command.tail[0].value->words) : -1;
+  if (dim < 0 || hostDim < 0) return unsupportedStatement(command, where);
+  const ast::Expr& host = *command.tail[0].value;
+  GeoFactory& geo = session_.geo();
+  try {
+    const std::vector<int> tags = shapeTags(*command.shape, dim);
+    for (int hostTag : shapeTags(host, hostDim)) geo.embed(dim, tags, hostDim, hostTag);
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
 }
 
 // Point{t}: its coordinates. Curve{..}, Surface{:}: tags. Operations: the tags they give.

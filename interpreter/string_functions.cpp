@@ -1,4 +1,5 @@
-// String functions: StrCat, Sprintf, StrSub, StrFind, UpperCase, DirName, GetEnv, ...
+// String functions: StrCat, Sprintf, StrSub, StrFind, UpperCase, DirName, GetEnv, ..., the string
+// family of the function registry.
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -28,101 +29,142 @@ std::string directoryWithSlash(const std::string& s) {
   return slash == std::string::npos ? std::string() : s.substr(0, slash + 1);
 }
 
+// As C's strcmp: the difference of the first differing bytes (0 when equal).
+int compareBytes(const std::string& a, const std::string& b) {
+  std::size_t i = 0;
+  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+  const int left = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+  const int right = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+  return left - right;
+}
+
+std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
+  for (std::size_t at = from.empty() ? std::string::npos : s.find(from); at != std::string::npos;
+       at = s.find(from, at + to.size()))
+    s.replace(at, from.size(), to);
+  return s;
+}
+
+std::string upperCase(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string lowerCase(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+using Call = const ast::Expr&;
+constexpr std::size_t kAnyCount = ScriptFunction::kAnyCount;
+
 }  // namespace
 
-std::optional<Value> Interpreter::callStringFunction(const ast::Expr& call) {
-  const std::string& name = call.text;
-  const auto& args = call.args;
-  auto arity = [&](std::size_t low, std::size_t high) {
-    if (args.size() < low || args.size() > high)
-      fail(call.loc, "'" + name + "' takes " + std::to_string(low) +
-                         (high != low ? " to " + std::to_string(high) : std::string()) +
-                         " arguments, not " + std::to_string(args.size()));
+// The pieces StrCat and Str put together: strings as they are, numbers as %g writes them.
+std::vector<std::string> Interpreter::textPieces(const ast::Expr& call) {
+  std::vector<std::string> parts;
+  for (const auto& arg : call.args) {
+    Value v = evaluate(*arg);
+    if (v.isText())
+      parts.insert(parts.end(), v.strings().begin(), v.strings().end());
+    else
+      for (double x : v.numbers())
+        parts.push_back(formatPrintf("%g", std::vector<FormatArgument>{x}));
+  }
+  return parts;
+}
+
+std::span<const ScriptFunction> Interpreter::stringFunctions() {
+  // the string argument i of the call
+  static constexpr auto text = [](Interpreter& in, Call call, std::size_t i) {
+    return in.evaluateString(*call.args[i]);
   };
-  auto str = [&](std::size_t i) { return evaluateString(*args[i]); };
-  if (name == "StrCat" || name == "Str") {
-    std::vector<std::string> parts;
-    for (const auto& arg : args) {
-      Value v = evaluate(*arg);
-      if (v.isText())
-        parts.insert(parts.end(), v.strings().begin(), v.strings().end());
-      else
-        for (double x : v.numbers())
-          parts.push_back(formatPrintf("%g", std::vector<FormatArgument>{x}));
-    }
-    if (name == "Str" && parts.size() != 1) return Value::stringList(std::move(parts));
-    std::string joined;
-    for (const auto& p : parts) joined += p;
-    return Value::string(joined);
-  }
-  if (name == "Sprintf") { arity(1, 1000); return Value::string(format(args, call.loc)); }
-  if (name == "StrPrefix") { arity(1, 1); return Value::string(withoutExtension(str(0))); }
-  if (name == "StrRelative") { arity(1, 1); return Value::string(withoutDirectory(str(0))); }
-  if (name == "DirName") { arity(1, 1); return Value::string(directoryWithSlash(str(0))); }
-  if (name == "AbsolutePath") {
-    arity(1, 1);
-    std::filesystem::path p = str(0);
-    std::error_code ignored;
-    if (p.is_relative())
-      p = std::filesystem::absolute(std::filesystem::path(directoryOf(call.loc.file)) / p, ignored);
-    return Value::string(p.lexically_normal().string());
-  }
-  if (name == "StrSub") {
-    arity(2, 3);
-    std::string s = str(0);
-    auto from = clampedInteger<std::size_t>(std::max(0.0, evaluateNumber(*args[1])));
-    std::size_t count = std::string::npos;
-    if (args.size() > 2)
-      count = clampedInteger<std::size_t>(std::max(0.0, evaluateNumber(*args[2])));
-    return Value::string(from < s.size() ? s.substr(from, count) : std::string());
-  }
-  if (name == "StrLen") { arity(1, 1); return Value::number(static_cast<double>(str(0).size())); }
-  if (name == "StrFind") {
-    arity(2, 2);
-    return Value::number(str(0).find(str(1)) != std::string::npos ? 1 : 0);
-  }
-  if (name == "StrCmp") {
-    // As C's strcmp: the difference of the first differing bytes (0 when equal).
-    arity(2, 2);
-    const std::string a = str(0), b = str(1);
-    std::size_t i = 0;
-    while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
-    const int left = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
-    const int right = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
-    return Value::number(left - right);
-  }
-  if (name == "StrChoice") {
-    arity(3, 3);
-    return Value::string(evaluateNumber(*args[0]) != 0 ? str(1) : str(2));
-  }
-  if (name == "StrReplace") {
-    arity(3, 3);
-    std::string s = str(0), from = str(1), to = str(2);
-    for (std::size_t at = from.empty() ? std::string::npos : s.find(from); at != std::string::npos;
-         at = s.find(from, at + to.size()))
-      s.replace(at, from.size(), to);
-    return Value::string(s);
-  }
-  if (name == "UpperCase" || name == "LowerCase") {
-    arity(1, 1);
-    std::string s = str(0);
-    for (char& c : s)
-      c = static_cast<char>(name == "UpperCase" ? std::toupper(static_cast<unsigned char>(c))
-                                                : std::tolower(static_cast<unsigned char>(c)));
-    return Value::string(s);
-  }
-  if (name == "GetEnv") {
-    arity(1, 1);
-    const char* value = std::getenv(str(0).c_str());
-    return Value::string(value ? value : "");
-  }
-  if (name == "NameToString") {
-    arity(1, 1);
-    if (args[0]->kind != ast::ExprKind::Variable)
-      fail(args[0]->loc, "NameToString takes a variable name");
-    return Value::string(resolveName(args[0]->name));
-  }
-  return std::nullopt;
+  static constexpr ScriptFunction kRows[] = {
+      {"StrCat", 0, kAnyCount, "",
+       [](Interpreter& in, Call call) {
+         std::string joined;
+         for (const auto& piece : in.textPieces(call)) joined += piece;
+         return Value::string(joined);
+       }},
+      {"Str", 0, kAnyCount, "",  // a list of strings, unless there is only one
+       [](Interpreter& in, Call call) {
+         std::vector<std::string> pieces = in.textPieces(call);
+         if (pieces.size() != 1) return Value::stringList(std::move(pieces));
+         return Value::string(pieces[0]);
+       }},
+      {"Sprintf", 1, 1000, "",
+       [](Interpreter& in, Call call) { return Value::string(in.format(call.args, call.loc)); }},
+      {"StrPrefix", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         return Value::string(withoutExtension(text(in, call, 0)));
+       }},
+      {"StrRelative", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         return Value::string(withoutDirectory(text(in, call, 0)));
+       }},
+      {"DirName", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         return Value::string(directoryWithSlash(text(in, call, 0)));
+       }},
+      {"AbsolutePath", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         std::filesystem::path p = text(in, call, 0);
+         std::error_code ignored;
+         if (p.is_relative())
+           p = std::filesystem::absolute(std::filesystem::path(in.directoryOf(call.loc.file)) / p,
+                                         ignored);
+         return Value::string(p.lexically_normal().string());
+       }},
+      {"StrSub", 2, 3, "",  // StrSub(s, from[, count])
+       [](Interpreter& in, Call call) {
+         const std::string s = text(in, call, 0);
+         auto from = clampedInteger<std::size_t>(std::max(0.0, in.evaluateNumber(*call.args[1])));
+         std::size_t count = std::string::npos;
+         if (call.args.size() > 2)
+           count = clampedInteger<std::size_t>(std::max(0.0, in.evaluateNumber(*call.args[2])));
+         return Value::string(from < s.size() ? s.substr(from, count) : std::string());
+       }},
+      {"StrLen", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         return Value::number(static_cast<double>(text(in, call, 0).size()));
+       }},
+      {"StrFind", 2, 2, "",
+       [](Interpreter& in, Call call) {
+         return Value::number(text(in, call, 0).find(text(in, call, 1)) != std::string::npos ? 1
+                                                                                            : 0);
+       }},
+      {"StrCmp", 2, 2, "",
+       [](Interpreter& in, Call call) {
+         const std::string a = text(in, call, 0), b = text(in, call, 1);
+         return Value::number(compareBytes(a, b));
+       }},
+      {"StrChoice", 3, 3, "",
+       [](Interpreter& in, Call call) {
+         return Value::string(in.evaluateNumber(*call.args[0]) != 0 ? text(in, call, 1)
+                                                                    : text(in, call, 2));
+       }},
+      {"StrReplace", 3, 3, "",
+       [](Interpreter& in, Call call) {
+         std::string s = text(in, call, 0), from = text(in, call, 1), to = text(in, call, 2);
+         return Value::string(replaceAll(std::move(s), from, to));
+       }},
+      {"UpperCase", 1, 1, "",
+       [](Interpreter& in, Call call) { return Value::string(upperCase(text(in, call, 0))); }},
+      {"LowerCase", 1, 1, "",
+       [](Interpreter& in, Call call) { return Value::string(lowerCase(text(in, call, 0))); }},
+      {"GetEnv", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         const char* value = std::getenv(text(in, call, 0).c_str());
+         return Value::string(value ? value : "");
+       }},
+      {"NameToString", 1, 1, "",
+       [](Interpreter& in, Call call) {
+         if (call.args[0]->kind != ast::ExprKind::Variable)
+           in.fail(call.args[0]->loc, "NameToString takes a variable name");
+         return Value::string(in.resolveName(call.args[0]->name));
+       }},
+  };
+  return kRows;
 }
 
 }  // namespace geomesh

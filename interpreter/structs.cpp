@@ -5,7 +5,6 @@
 // definition never overwrites a member already there (Append only adds). With `Enum`, a member
 // without a value takes the next integer after the last value given (0 first); elsewhere such
 // a member is a flag worth 1.
-#include "grammar/keywords.h"
 #include "interpreter/script_interpreter.h"
 
 namespace geomesh {
@@ -176,7 +175,7 @@ std::optional<Value> Interpreter::valueIfDefined(const ast::Expr& expr) {
           expr.kind == ExprKind::Call ? expr.text : resolveName(expr.name);
       auto it = variables_.find(name);
       if (it == variables_.end()) {
-        if (expr.kind == ExprKind::Element || !isFunctionName(name)) return std::nullopt;
+        if (expr.kind == ExprKind::Element || !functions_.find(name)) return std::nullopt;
         break;
       }
       if (expr.args.empty()) return evaluate(expr);
@@ -204,44 +203,51 @@ std::optional<Value> Interpreter::valueIfDefined(const ast::Expr& expr) {
 
 // GetForced(x[, default]), DimNameSpace([namespace]), NameStruct[NS::#t] (the name of the
 // Struct of tag t in a namespace) and S2N["name"] (the tag of a global Struct).
-std::optional<Value> Interpreter::callStructFunction(const ast::Expr& call) {
-  const auto& args = call.args;
-  if (call.text == "NameStruct") {
-    if (args.size() != 1 || args[0]->kind != ast::ExprKind::Count)
-      fail(call.loc, "NameStruct takes a tag in a namespace, as in NameStruct[NS::#1]");
-    const ast::Expr& count = *args[0];
-    const std::string space = count.words.empty() ? "" : count.words.front();
-    const double tag = evaluateNumber(*count.args[0]);
-    if (auto it = structSpaces_.find(space); it != structSpaces_.end())
-      for (const auto& [name, data] : it->second.structs)
-        if (data.tag == tag) return Value::string(name);
-    warn(call.loc, "no Struct of tag " + std::to_string(clampedInteger<long long>(tag)) +
-                       (space.empty() ? "" : " in namespace '" + space + "'"));
-    return Value::string("");
-  }
-  if (call.text == "S2N") {
-    if (args.size() != 1) fail(call.loc, "S2N takes the name of a Struct, as a string");
-    ast::Expr ref;
-    ref.kind = ast::ExprKind::Member;
-    ref.loc = call.loc;
-    ref.words.emplace_back();
-    ref.name.base = evaluateString(*args[0]);
-    return memberValue(ref);
-  }
-  if (call.text == "GetForced") {
-    if (args.empty() || args.size() > 2) fail(call.loc, "GetForced takes 1 or 2 arguments");
-    if (auto value = valueIfDefined(*args[0])) return value;
-    return args.size() > 1 ? evaluate(*args[1]) : Value::number(0);
-  }
-  if (call.text == "DimNameSpace") {
-    if (args.size() > 1 || (args.size() == 1 && (args[0]->kind != ast::ExprKind::Variable ||
-                                                 !args[0]->name.suffixes.empty())))
-      fail(call.loc, "DimNameSpace takes a namespace name, or nothing for the global one");
-    const std::string space = args.empty() ? "" : args[0]->name.base;
-    auto it = structSpaces_.find(space);
-    return Value::number(it == structSpaces_.end() ? 0 : it->second.structs.size());
-  }
-  return std::nullopt;
+std::span<const ScriptFunction> Interpreter::structFunctions() {
+  using Call = const ast::Expr&;
+  static constexpr ScriptFunction kRows[] = {
+      {"NameStruct", 1, 1, "NameStruct takes a tag in a namespace, as in NameStruct[NS::#1]",
+       [](Interpreter& in, Call call) { return in.nameOfStruct(call); }},
+      {"S2N", 1, 1, "S2N takes the name of a Struct, as a string",
+       [](Interpreter& in, Call call) {
+         ast::Expr ref;
+         ref.kind = ast::ExprKind::Member;
+         ref.loc = call.loc;
+         ref.words.emplace_back();
+         ref.name.base = in.evaluateString(*call.args[0]);
+         return in.memberValue(ref);
+       }},
+      {"GetForced", 1, 2, "GetForced takes 1 or 2 arguments",
+       [](Interpreter& in, Call call) {
+         if (auto value = in.valueIfDefined(*call.args[0])) return *value;
+         return call.args.size() > 1 ? in.evaluate(*call.args[1]) : Value::number(0);
+       }},
+      {"DimNameSpace", 0, 1, "DimNameSpace takes a namespace name, or nothing for the global one",
+       [](Interpreter& in, Call call) {
+         const auto& args = call.args;
+         if (args.size() == 1 &&
+             (args[0]->kind != ast::ExprKind::Variable || !args[0]->name.suffixes.empty()))
+           in.fail(call.loc, "DimNameSpace takes a namespace name, or nothing for the global one");
+         const std::string space = args.empty() ? "" : args[0]->name.base;
+         auto it = in.structSpaces_.find(space);
+         return Value::number(it == in.structSpaces_.end() ? 0 : it->second.structs.size());
+       }},
+  };
+  return kRows;
+}
+
+Value Interpreter::nameOfStruct(const ast::Expr& call) {
+  if (call.args[0]->kind != ast::ExprKind::Count)
+    fail(call.loc, "NameStruct takes a tag in a namespace, as in NameStruct[NS::#1]");
+  const ast::Expr& count = *call.args[0];
+  const std::string space = count.words.empty() ? "" : count.words.front();
+  const double tag = evaluateNumber(*count.args[0]);
+  if (auto it = structSpaces_.find(space); it != structSpaces_.end())
+    for (const auto& [name, data] : it->second.structs)
+      if (data.tag == tag) return Value::string(name);
+  warn(call.loc, "no Struct of tag " + std::to_string(clampedInteger<long long>(tag)) +
+                     (space.empty() ? "" : " in namespace '" + space + "'"));
+  return Value::string("");
 }
 
 }  // namespace geomesh

@@ -8,93 +8,70 @@ namespace geomesh {
 
 namespace {
 
-struct Unary {
-  std::string_view name;
-  double (*apply)(double);
-};
+using Args = std::span<const double>;
 
-struct Binary {
-  std::string_view name;
-  double (*apply)(double, double);
-};
-
-double roundHalfUp(double x) { return std::floor(x + 0.5); }
-double heaviside(double x) { return x >= 0 ? 1 : 0; }
-double sign(double x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
-
-constexpr Unary kUnary[] = {
-    {"Exp", [](double x) { return std::exp(x); }},
-    {"Log", [](double x) { return std::log(x); }},
-    {"Log10", [](double x) { return std::log10(x); }},
-    {"Sqrt", [](double x) { return std::sqrt(x); }},
-    {"Sin", [](double x) { return std::sin(x); }},
-    {"Cos", [](double x) { return std::cos(x); }},
-    {"Tan", [](double x) { return std::tan(x); }},
-    {"Asin", [](double x) { return std::asin(x); }},
-    {"ArcSin", [](double x) { return std::asin(x); }},
-    {"Acos", [](double x) { return std::acos(x); }},
-    {"ArcCos", [](double x) { return std::acos(x); }},
-    {"Atan", [](double x) { return std::atan(x); }},
-    {"ArcTan", [](double x) { return std::atan(x); }},
-    {"Sinh", [](double x) { return std::sinh(x); }},
-    {"Cosh", [](double x) { return std::cosh(x); }},
-    {"Tanh", [](double x) { return std::tanh(x); }},
-    {"Asinh", [](double x) { return std::asinh(x); }},
-    {"Acosh", [](double x) { return std::acosh(x); }},
-    {"Atanh", [](double x) { return std::atanh(x); }},
-    {"Fabs", [](double x) { return std::fabs(x); }},
-    {"Abs", [](double x) { return std::fabs(x); }},
-    {"Floor", [](double x) { return std::floor(x); }},
-    {"Ceil", [](double x) { return std::ceil(x); }},
-    {"Round", roundHalfUp},
-    {"Step", heaviside},
-    {"Sign", sign},
-};
-
-constexpr Binary kBinary[] = {
-    {"Atan2", [](double y, double x) { return std::atan2(y, x); }},
-    {"ArcTan2", [](double y, double x) { return std::atan2(y, x); }},
-    {"Fmod", [](double a, double b) { return std::fmod(a, b); }},
-    {"Modulo", [](double a, double b) { return std::fmod(a, b); }},
-    {"Hypot", [](double a, double b) { return std::hypot(a, b); }},
-    {"Max", [](double a, double b) { return std::fmax(a, b); }},
-    {"Min", [](double a, double b) { return std::fmin(a, b); }},
-};
-
-void requireCount(std::string_view name, std::span<const double> args, std::size_t count) {
-  if (args.size() != count)
-    throw std::invalid_argument("'" + std::string(name) + "' takes " + std::to_string(count) +
-                                " argument" + (count == 1 ? "" : "s") + ", not " +
-                                std::to_string(args.size()));
+// A number drawn uniformly from [0, x).
+double drawUpTo(Args x, RandomEngine& random) {
+  return std::uniform_real_distribution<double>(0.0, 1.0)(random) * x[0];
 }
+
+// One row per function: name, number of arguments, body. Round rounds halves up (-2.5 -> -2),
+// Step is 1 from 0 on, Sign is 0 at 0.
+constexpr MathFunction kMathFunctions[] = {
+    {"Exp", 1, [](Args x, RandomEngine&) { return std::exp(x[0]); }},
+    {"Log", 1, [](Args x, RandomEngine&) { return std::log(x[0]); }},
+    {"Log10", 1, [](Args x, RandomEngine&) { return std::log10(x[0]); }},
+    {"Sqrt", 1, [](Args x, RandomEngine&) { return std::sqrt(x[0]); }},
+    {"Sin", 1, [](Args x, RandomEngine&) { return std::sin(x[0]); }},
+    {"Cos", 1, [](Args x, RandomEngine&) { return std::cos(x[0]); }},
+    {"Tan", 1, [](Args x, RandomEngine&) { return std::tan(x[0]); }},
+    {"Asin", 1, [](Args x, RandomEngine&) { return std::asin(x[0]); }},
+    {"ArcSin", 1, [](Args x, RandomEngine&) { return std::asin(x[0]); }},
+    {"Acos", 1, [](Args x, RandomEngine&) { return std::acos(x[0]); }},
+    {"ArcCos", 1, [](Args x, RandomEngine&) { return std::acos(x[0]); }},
+    {"Atan", 1, [](Args x, RandomEngine&) { return std::atan(x[0]); }},
+    {"ArcTan", 1, [](Args x, RandomEngine&) { return std::atan(x[0]); }},
+    {"Sinh", 1, [](Args x, RandomEngine&) { return std::sinh(x[0]); }},
+    {"Cosh", 1, [](Args x, RandomEngine&) { return std::cosh(x[0]); }},
+    {"Tanh", 1, [](Args x, RandomEngine&) { return std::tanh(x[0]); }},
+    {"Asinh", 1, [](Args x, RandomEngine&) { return std::asinh(x[0]); }},
+    {"Acosh", 1, [](Args x, RandomEngine&) { return std::acosh(x[0]); }},
+    {"Atanh", 1, [](Args x, RandomEngine&) { return std::atanh(x[0]); }},
+    {"Fabs", 1, [](Args x, RandomEngine&) { return std::fabs(x[0]); }},
+    {"Abs", 1, [](Args x, RandomEngine&) { return std::fabs(x[0]); }},
+    {"Floor", 1, [](Args x, RandomEngine&) { return std::floor(x[0]); }},
+    {"Ceil", 1, [](Args x, RandomEngine&) { return std::ceil(x[0]); }},
+    {"Round", 1, [](Args x, RandomEngine&) { return std::floor(x[0] + 0.5); }},
+    {"Step", 1, [](Args x, RandomEngine&) { return x[0] >= 0 ? 1.0 : 0.0; }},
+    {"Sign", 1, [](Args x, RandomEngine&) { return x[0] > 0 ? 1.0 : (x[0] < 0 ? -1.0 : 0.0); }},
+    {"Atan2", 2, [](Args x, RandomEngine&) { return std::atan2(x[0], x[1]); }},
+    {"ArcTan2", 2, [](Args x, RandomEngine&) { return std::atan2(x[0], x[1]); }},
+    {"Fmod", 2, [](Args x, RandomEngine&) { return std::fmod(x[0], x[1]); }},
+    {"Modulo", 2, [](Args x, RandomEngine&) { return std::fmod(x[0], x[1]); }},
+    {"Hypot", 2, [](Args x, RandomEngine&) { return std::hypot(x[0], x[1]); }},
+    {"Max", 2, [](Args x, RandomEngine&) { return std::fmax(x[0], x[1]); }},
+    {"Min", 2, [](Args x, RandomEngine&) { return std::fmin(x[0], x[1]); }},
+    {"Rand", 1, drawUpTo},
+};
 
 }  // namespace
 
-bool isMathFunction(std::string_view name) {
-  for (const auto& f : kUnary)
-    if (f.name == name) return true;
-  for (const auto& f : kBinary)
-    if (f.name == name) return true;
-  return name == "Rand";
+std::span<const MathFunction> mathFunctions() { return kMathFunctions; }
+
+const MathFunction* findMathFunction(std::string_view name) {
+  for (const auto& function : kMathFunctions)
+    if (function.name == name) return &function;
+  return nullptr;
 }
 
-std::optional<double> callMathFunction(std::string_view name, std::span<const double> args,
-                                       RandomEngine& random) {
-  for (const auto& f : kUnary) {
-    if (f.name != name) continue;
-    requireCount(name, args, 1);
-    return f.apply(args[0]);
-  }
-  for (const auto& f : kBinary) {
-    if (f.name != name) continue;
-    requireCount(name, args, 2);
-    return f.apply(args[0], args[1]);
-  }
-  if (name == "Rand") {
-    requireCount(name, args, 1);
-    return std::uniform_real_distribution<double>(0.0, 1.0)(random) * args[0];
-  }
-  return std::nullopt;
+double applyMathFunction(const MathFunction& function, std::span<const double> args,
+                         RandomEngine& random) {
+  const std::size_t count = function.arguments;
+  if (args.size() != count)
+    throw std::invalid_argument("'" + std::string(function.name) + "' takes " +
+                                std::to_string(count) + " argument" + (count == 1 ? "" : "s") +
+                                ", not " + std::to_string(args.size()));
+  return function.apply(args, random);
 }
 
 }  // namespace geomesh

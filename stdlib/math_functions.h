@@ -1,6 +1,6 @@
 #pragma once
 
-#include <optional>
+#include <cstddef>
 #include <random>
 #include <span>
 #include <string_view>
@@ -10,13 +10,23 @@ namespace geomesh {
 // Where Rand() draws from: one generator per session, so runs are reproducible.
 using RandomEngine = std::mt19937_64;
 
-// Evaluates the numeric built-in function `name` (Sin, Atan2, Max, Round, ...) on `args`.
-// Returns nullopt when `name` is not a numeric built-in. Throws std::invalid_argument when
-// the number of arguments is wrong (the message says how many are expected).
-std::optional<double> callMathFunction(std::string_view name, std::span<const double> args,
-                                       RandomEngine& random);
+// A numeric built-in function (Sin, Atan2, Max, Round, Rand, ...), one row of the math
+// library: its name, how many numbers it takes, and what it computes from them.
+struct MathFunction {
+  std::string_view name;
+  std::size_t arguments;
+  double (*apply)(std::span<const double> args, RandomEngine& random);
+};
 
-// Whether `name` is a numeric built-in function.
-bool isMathFunction(std::string_view name);
+// Every numeric built-in function, in the order of the library's table.
+std::span<const MathFunction> mathFunctions();
+
+// The row of the numeric built-in `name`, or null when there is none.
+const MathFunction* findMathFunction(std::string_view name);
+
+// Applies `function` to `args`. Throws std::invalid_argument when the number of arguments is
+// wrong (the message says how many are expected).
+double applyMathFunction(const MathFunction& function, std::span<const double> args,
+                         RandomEngine& random);
 
 }  // namespace geomesh

@@ -43,7 +43,9 @@ TEST(Ranges, LinAndLogSpace) {
 TEST(MathFunctions, GmshSemantics) {
   RandomEngine random;
   auto call = [&](std::string_view name, std::vector<double> args) {
-    return *callMathFunction(name, args, random);
+    const MathFunction* function = findMathFunction(name);
+    if (!function) throw std::logic_error("no math function " + std::string(name));
+    return applyMathFunction(*function, args, random);
   };
   EXPECT_EQ(call("Round", {2.5}), 3);
   EXPECT_EQ(call("Round", {-2.5}), -2);
@@ -55,8 +57,31 @@ TEST(MathFunctions, GmshSemantics) {
   double r = call("Rand", {2});
   EXPECT_GE(r, 0);
   EXPECT_LT(r, 2);
-  EXPECT_FALSE(callMathFunction("Nope", {}, random));
+  EXPECT_EQ(findMathFunction("Nope"), nullptr);
   EXPECT_THROW(call("Sin", {1, 2}), std::invalid_argument);
+}
+
+// Each row's body takes as many numbers as the row says: a wrong count is refused before the
+// body could read past its arguments, with the row's count in the message.
+TEST(MathFunctions, EveryRowChecksItsArgumentCount) {
+  RandomEngine random;
+  for (const MathFunction& function : mathFunctions()) {
+    EXPECT_EQ(findMathFunction(function.name), &function) << function.name;
+    ASSERT_TRUE(function.arguments == 1 || function.arguments == 2) << function.name;
+    const std::vector<double> right(function.arguments, 0.5);
+    EXPECT_NO_THROW(applyMathFunction(function, right, random)) << function.name;
+    const std::vector<double> wrong(function.arguments + 1, 0.5);
+    try {
+      applyMathFunction(function, wrong, random);
+      ADD_FAILURE() << function.name << " accepted " << wrong.size() << " arguments";
+    } catch (const std::invalid_argument& error) {
+      const std::string expected = "'" + std::string(function.name) + "' takes " +
+                                   std::to_string(function.arguments) + " argument" +
+                                   (function.arguments == 1 ? "" : "s") + ", not " +
+                                   std::to_string(wrong.size());
+      EXPECT_EQ(error.what(), expected);
+    }
+  }
 }
 
 std::string fmt(std::string_view format, std::vector<FormatArgument> args) {

@@ -1,0 +1,214 @@
+// The statement table: the words that start a command, mapped to the member function that
+// carries it out, as a parser's statement() switches once on its first token. A row's words are
+// the command's words exactly ("Physical Surface"), or a head followed by " ..." for any words
+// after it. A handler checks the form of its statement (parentheses, braces, '=') and reports
+// the forms it does not carry out through unsupportedStatement or skipInBatch.
+#include <algorithm>
+
+#include "interpreter/diagnostics.h"
+#include "interpreter/script_interpreter.h"
+#include "api/session.h"
+
+namespace geomesh {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string text;
+  for (const auto& word : words) text += (text.empty() ? "" : " ") + word;
+  return text;
+}
+
+// How a warning names a command: "Transfinite Curve", "Point In Surface".
+std::string commandName(const ast::CommandStmt& command) {
+  std::string name = joined(command.words);
+  if (!command.tail.empty() && command.tail[0].word == "In" && command.tail[0].value)
+    name += " In " + joined(command.tail[0].value->words);
+  return name;
+}
+
+// Command keywords that start no statement of their own.
+constexpr std::string_view kNoStatement[] = {
+    // words that continue a statement: Characteristic Length, Curve Loop, Delete Physicals, ...
+    "Closest", "Filling", "Length", "Loop", "Physicals", "QuadTriAddVerts", "QuadTriNoNewVerts",
+    // inside expressions and blocks: Extrude{..}{ Layers{..}; }, PointsOf{..}, ShapeFromFile(..)
+    "Layers", "PointsOf", "ShapeFromFile",
+    // option categories: General.Verbosity = 3;
+    "General", "Geometry",
+};
+
+}  // namespace
+
+// Sorted by words, for a binary search. Rows ending in " ..." take the head followed by any
+// words: the interface-only statements, which a batch run skips (Draw, Sleep, View, ...), and
+// the statements recognised but not supported yet, which warn.
+std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
+  static constexpr StatementRow kRows[] = {
+      {"Abort ...", &Interpreter::abortScript},
+      {"AdaptMesh ...", &Interpreter::unsupportedStatement},
+      {"Affine", &Interpreter::executeShapeOperation},
+      {"BSpline", &Interpreter::defineEntity},
+      {"Background ...", &Interpreter::unsupportedStatement},
+      {"Background Field", &Interpreter::setBackgroundField},
+      {"Bezier", &Interpreter::defineEntity},
+      {"Block ...", &Interpreter::unsupportedStatement},
+      {"BooleanDifference ...", &Interpreter::unsupportedStatement},
+      {"BooleanFragments ...", &Interpreter::unsupportedStatement},
+      {"BooleanIntersection ...", &Interpreter::unsupportedStatement},
+      {"BooleanUnion ...", &Interpreter::unsupportedStatement},
+      {"Boundary", &Interpreter::executeShapeOperation},
+      {"BoundingBox ...", &Interpreter::skipInBatch},
+      {"Box ...", &Interpreter::unsupportedStatement},
+      {"Chamfer ...", &Interpreter::unsupportedStatement},
+      {"Characteristic Length", &Interpreter::executeMeshSize},
+      {"Circle", &Interpreter::defineCircleArc},
+      {"ClassifySurfaces ...", &Interpreter::unsupportedStatement},
+      {"Coherence", &Interpreter::executeCoherence},
+      {"Coherence Mesh", &Interpreter::executeCoherenceMesh},
+      {"Cohomology ...", &Interpreter::unsupportedStatement},
+      {"Color ...", &Interpreter::skipInBatch},
+      {"CombinedBoundary", &Interpreter::executeShapeOperation},
+      {"Compound Curve", &Interpreter::executeCompound},
+      {"Compound Line", &Interpreter::executeCompound},
+      {"Compound Surface", &Interpreter::executeCompound},
+      {"Compound Volume", &Interpreter::executeCompound},
+      {"Cone ...", &Interpreter::unsupportedStatement},
+      {"CreateGeometry ...", &Interpreter::unsupportedStatement},
+      {"CreateTopology ...", &Interpreter::unsupportedStatement},
+      {"Curve", &Interpreter::embedEntities},
+      {"Curve Loop", &Interpreter::defineEntity},
+      {"Cylinder ...", &Interpreter::unsupportedStatement},
+      {"Delete", &Interpreter::executeDelete},
+      {"Delete Physicals", &Interpreter::executeDeletePhysicals},
+      {"Dilate", &Interpreter::executeShapeOperation},
+      {"Disk ...", &Interpreter::unsupportedStatement},
+      {"Draw ...", &Interpreter::skipInBatch},
+      {"Duplicata", &Interpreter::executeShapeOperation},
+      {"Ellipse", &Interpreter::defineEntity},
+      {"Error ...", &Interpreter::executeMessage},
+      {"Exit ...", &Interpreter::exitScript},
+      {"Extrude", &Interpreter::executeShapeOperation},
+      {"Field", &Interpreter::defineField},
+      {"Fillet ...", &Interpreter::unsupportedStatement},
+      {"HealShapes ...", &Interpreter::unsupportedStatement},
+      {"Hide ...", &Interpreter::skipInBatch},
+      {"Homology ...", &Interpreter::unsupportedStatement},
+      {"Include", &Interpreter::executeInclude},
+      {"Line", &Interpreter::defineEntity},
+      {"Line Loop", &Interpreter::defineEntity},
+      {"Merge", &Interpreter::executeMerge},
+      {"Mesh", &Interpreter::executeMesh},
+      {"MeshAlgorithm Surface", &Interpreter::setSurfaceAlgorithm},
+      {"MeshSize", &Interpreter::executeMeshSize},
+      {"NewModel", &Interpreter::executeNewModel},
+      {"NonBlockingSystem ...", &Interpreter::executeSystemCall},
+      {"NonBlockingSystemCall ...", &Interpreter::executeSystemCall},
+      {"OptimizeMesh ...", &Interpreter::unsupportedStatement},
+      {"PartitionMesh ...", &Interpreter::unsupportedStatement},
+      {"Periodic Curve", &Interpreter::executePeriodic},
+      {"Periodic Line", &Interpreter::executePeriodic},
+      {"Periodic Surface", &Interpreter::executePeriodicSurface},
+      {"Periodic Volume", &Interpreter::executePeriodic},
+      {"Physical Curve", &Interpreter::executePhysical},
+      {"Physical Line", &Interpreter::executePhysical},
+      {"Physical Point", &Interpreter::executePhysical},
+      {"Physical Surface", &Interpreter::executePhysical},
+      {"Physical Volume", &Interpreter::executePhysical},
+      {"Plane Surface", &Interpreter::defineEntity},
+      {"Point", &Interpreter::definePoint},
+      {"PostProcessing ...", &Interpreter::skipInBatch},
+      {"Print", &Interpreter::executePrint},
+      {"Print ...", &Interpreter::skipInBatch},
+      {"Printf", &Interpreter::executePrintf},
+      {"Recombine Surface", &Interpreter::recombineSurfaces},
+      {"Rectangle ...", &Interpreter::unsupportedStatement},
+      {"Recursive Delete", &Interpreter::deleteShapes},
+      {"RefineMesh ...", &Interpreter::unsupportedStatement},
+      {"RelocateMesh ...", &Interpreter::unsupportedStatement},
+      {"RenumberMeshElements", &Interpreter::executeAlreadyDone},
+      {"RenumberMeshNodes", &Interpreter::executeAlreadyDone},
+      {"ReorientMesh ...", &Interpreter::unsupportedStatement},
+      {"Reverse ...", &Interpreter::unsupportedStatement},
+      {"Rotate", &Interpreter::executeShapeOperation},
+      {"Ruled Surface", &Interpreter::defineEntity},
+      {"Save", &Interpreter::executeSave},
+      {"SetChanged ...", &Interpreter::skipInBatch},
+      {"SetFactory ...", &Interpreter::executeSetFactory},
+      {"SetNumber ...", &Interpreter::executeSetter},
+      {"SetOrder ...", &Interpreter::unsupportedStatement},
+      {"SetString ...", &Interpreter::executeSetter},
+      {"Show ...", &Interpreter::skipInBatch},
+      {"Sleep ...", &Interpreter::skipInBatch},
+      {"Smoother ...", &Interpreter::unsupportedStatement},
+      {"Solver ...", &Interpreter::skipInBatch},
+      {"Sphere ...", &Interpreter::unsupportedStatement},
+      {"Spline", &Interpreter::defineEntity},
+      {"Struct", &Interpreter::executeStructStatement},
+      {"Surface", &Interpreter::defineEntity},
+      {"Surface Loop", &Interpreter::defineEntity},
+      {"Symmetry", &Interpreter::executeShapeOperation},
+      {"SyncModel", &Interpreter::executeAlreadyDone},
+      {"System ...", &Interpreter::executeSystemCall},
+      {"SystemCall ...", &Interpreter::executeSystemCall},
+      {"ThruSections ...", &Interpreter::unsupportedStatement},
+      {"Torus ...", &Interpreter::unsupportedStatement},
+      {"Transfinite Curve", &Interpreter::defineTransfiniteCurve},
+      {"Transfinite Line", &Interpreter::defineTransfiniteCurve},
+      {"Transfinite Surface", &Interpreter::defineTransfiniteSurface},
+      {"Translate", &Interpreter::executeShapeOperation},
+      {"View ...", &Interpreter::skipInBatch},
+      {"Volume", &Interpreter::defineEntity},
+      {"Warning ...", &Interpreter::executeMessage},
+      {"Wedge ...", &Interpreter::unsupportedStatement},
+      {"Wire ...", &Interpreter::unsupportedStatement},
+  };
+  static_assert(std::ranges::is_sorted(kRows, {}, &StatementRow::words));
+  return kRows;
+}
+
+const Interpreter::StatementRow* Interpreter::findStatement(const std::vector<std::string>& words) {
+  const auto rows = statementTable();
+  auto find = [&](std::string_view key) -> const StatementRow* {
+    auto it = std::ranges::lower_bound(rows, key, {}, &StatementRow::words);
+    return it != rows.end() && it->words == key ? &*it : nullptr;
+  };
+  if (const StatementRow* row = find(joined(words))) return row;
+  return find(words.front() + " ...");
+}
+
+void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (const StatementRow* row = findStatement(command.words))
+    return (this->*row->handler)(command, where);
+  unsupportedStatement(command, where);
+}
+
+std::vector<std::string_view> Interpreter::statementPatterns() {
+  std::vector<std::string_view> patterns;
+  for (const StatementRow& row : statementTable()) patterns.push_back(row.words);
+  return patterns;
+}
+
+std::span<const std::string_view> Interpreter::keywordsStartingNoStatement() {
+  return kNoStatement;
+}
+
+void Interpreter::unsupportedStatement(const ast::CommandStmt& command,
+                                       const SourceLocation& where) {
+  session_.noteIgnoredStatement(where);  // meshing a model this leaves empty is an error
+  warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
+}
+
+// Statements that only concern the graphical interface or post-processing: batch runs
+// ignore them.
+void Interpreter::skipInBatch(const ast::CommandStmt& command, const SourceLocation& where) {
+  session_.log().debug(where.file + ":" + std::to_string(where.line) + ": '" +
+                       joined(command.words) + "' has no effect in batch mode");
+}
+
+void Interpreter::exitScript(const ast::CommandStmt&, const SourceLocation&) { throw ScriptExit(); }
+
+void Interpreter::abortScript(const ast::CommandStmt&, const SourceLocation&) {
+  throw AbortScript();
+}
+
+}  // namespace geomesh
