@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
-#include "kernel/geo/geo_unrolled_writer.h"
+#include "kernel/unrolled_geo_hooks.h"
 #include "stdlib/clamped_integer.h"
 
 namespace geomesh::api {
@@ -56,7 +56,7 @@ void writeMesh(const Session& session, const std::string& path, const MeshFormat
 
 void writeUnrolledGeometry(Session& session, const std::string& path) {
   writeFileAtomically(path, [&](std::ostream& out) {
-    writeUnrolledGeo(session.geo(), out, meshConstraintHooks(session.model().meshConstraints()));
+    session.factory().writeUnrolled(out, meshConstraintHooks(session.model().meshConstraints()));
   });
 }
 

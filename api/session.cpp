@@ -19,7 +19,7 @@ Session::~Session() = default;
 
 void Session::synchronize() {
   if (!meshFromFile_) {
-    geo_.synchronize(model_);
+    factories_.synchronize(model_);
     return;
   }
   if (hasGeometry())
@@ -27,11 +27,7 @@ void Session::synchronize() {
         "the script defines geometry besides a merged mesh file: mixing both is not supported yet");
 }
 
-bool Session::hasGeometry() const {
-  for (int dim = 0; dim <= 3; ++dim)
-    if (geo_.maxTag(dim) > 0) return true;
-  return false;
-}
+bool Session::hasGeometry() const { return factories_.hasEntities(); }
 
 void Session::readMesh(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
@@ -78,7 +74,7 @@ void Session::generate(int dim) {
 }
 
 void Session::clearModel() {
-  geo_.clear();
+  factories_.clear();
   model_ = Model();
   mesh_ = Mesh();
   origins_.clear();

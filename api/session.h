@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "grammar/source.h"
-#include "kernel/geo/geo_factory.h"
+#include "kernel/factory_selection.h"
 #include "kernel/messages.h"
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
@@ -32,7 +32,9 @@ class Session {
 
   OptionRegistry& options() { return options_; }
   const OptionRegistry& options() const { return options_; }
-  GeoFactory& geo() { return geo_; }
+  // The geometry factory SetFactory selected (the built-in one at first), and the selection.
+  GeometryFactory& factory() { return factories_.current(); }
+  FactorySelection& factories() { return factories_; }
   Model& model() { return model_; }
   const Model& model() const { return model_; }
   Mesh& mesh() { return mesh_; }
@@ -53,7 +55,7 @@ class Session {
   bool sandboxed() const { return sandboxed_; }
   void setSandboxed(bool sandboxed) { sandboxed_ = sandboxed; }
 
-  // Rebuilds the model from the built-in factory.
+  // Rebuilds the model from the geometry factories.
   void synchronize();
   // The Mesh.* options, as the generators read them.
   MeshOptions meshOptions() const;
@@ -67,7 +69,7 @@ class Session {
   // synchronized. Throws std::runtime_error (MshReadError for a malformed MSH file).
   void readMesh(const std::string& path);
   bool meshFromFile() const { return meshFromFile_; }
-  // Whether the built-in factory holds any entity.
+  // Whether any geometry factory holds an entity.
   bool hasGeometry() const;
 
   // Where the script defined a curve, surface or volume, so that a failure met later (while
@@ -86,7 +88,7 @@ class Session {
   MessageSink& log_;
   std::ostream& out_;
   OptionRegistry options_;
-  GeoFactory geo_;
+  FactorySelection factories_;
   Model model_;
   Mesh mesh_;
   std::map<std::string, double> numberOverrides_;

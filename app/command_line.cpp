@@ -7,6 +7,9 @@
 
 #include "io/formats.h"
 
+#include "mesh/surfaces/surface_algorithms.h"
+#include "mesh/volumes/volume_algorithms.h"
+
 namespace geomesh {
 
 namespace {
@@ -46,23 +49,17 @@ const std::map<std::string, std::string>& numberOptionFlags() {
   return flags;
 }
 
-// -algo names, as Gmsh spells them, and the Mesh.Algorithm / Mesh.Algorithm3D values.
+// -algo names, as Gmsh spells them, found in the 2D and 3D algorithm registries.
 bool applyAlgorithm(const std::string& name, CommandLine& cl) {
-  static const std::map<std::string, std::pair<const char*, double>> algos = {
-      {"meshadapt", {"Mesh.Algorithm", 1}},   {"auto", {"Mesh.Algorithm", 2}},
-      {"initial2d", {"Mesh.Algorithm", 3}},   {"del2d", {"Mesh.Algorithm", 5}},
-      {"tri", {"Mesh.Algorithm", 5}},         {"front2d", {"Mesh.Algorithm", 6}},
-      {"frontal", {"Mesh.Algorithm", 6}},     {"bamg", {"Mesh.Algorithm", 7}},
-      {"delquad", {"Mesh.Algorithm", 8}},     {"pack", {"Mesh.Algorithm", 9}},
-      {"quadqs", {"Mesh.Algorithm", 11}},     {"del3d", {"Mesh.Algorithm3D", 1}},
-      {"initial3d", {"Mesh.Algorithm3D", 3}}, {"front3d", {"Mesh.Algorithm3D", 4}},
-      {"netgen", {"Mesh.Algorithm3D", 4}},    {"mmg3d", {"Mesh.Algorithm3D", 7}},
-      {"hxt", {"Mesh.Algorithm3D", 10}},
-  };
-  auto it = algos.find(name);
-  if (it == algos.end()) return false;
-  cl.numberOptions.emplace_back(it->second.first, it->second.second);
-  return true;
+  if (const SurfaceAlgorithm* row = findSurfaceAlgorithm(name)) {
+    cl.numberOptions.emplace_back("Mesh.Algorithm", row->code);
+    return true;
+  }
+  if (const VolumeAlgorithm* row = findVolumeAlgorithm(name)) {
+    cl.numberOptions.emplace_back("Mesh.Algorithm3D", row->code);
+    return true;
+  }
+  return false;
 }
 
 bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {

@@ -214,10 +214,10 @@ std::optional<Value> Interpreter::builtinConstant(std::string_view name) {
   if (name == "Cpu") return Value::number(static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
   if (name == "Memory") return Value::number(processMemoryMegabytes());
   if (name == "TotalMemory") return Value::number(totalMemoryMegabytes());
-  GeoFactory& geo = session_.geo();
+  GeometryFactory& geo = session_.factory();
   int region = deletedPhysicalTag_;
   for (const auto& [id, group] : geo.physicalGroups()) region = std::max(region, id.tag);
-  for (int kind : {1, 2, 3, int(GeoFactory::kCurveLoop), int(GeoFactory::kSurfaceLoop)})
+  for (int kind : {1, 2, 3, int(GeometryFactory::kCurveLoop), int(GeometryFactory::kSurfaceLoop)})
     region = std::max(region, geo.maxTag(kind));
   const bool oldNewReg = session_.options().number("Geometry.OldNewReg") != 0;
   auto next = [&](int kind) { return Value::number((oldNewReg ? region : geo.maxTag(kind)) + 1); };
@@ -225,8 +225,8 @@ std::optional<Value> Interpreter::builtinConstant(std::string_view name) {
   if (name == "newl" || name == "newc") return next(1);
   if (name == "news") return next(2);
   if (name == "newv") return next(3);
-  if (name == "newll" || name == "newcl") return next(GeoFactory::kCurveLoop);
-  if (name == "newsl") return next(GeoFactory::kSurfaceLoop);
+  if (name == "newll" || name == "newcl") return next(GeometryFactory::kCurveLoop);
+  if (name == "newsl") return next(GeometryFactory::kSurfaceLoop);
   if (name == "newreg") return Value::number(region + 1);
   return std::nullopt;
 }

@@ -46,11 +46,11 @@ void Interpreter::executeMessage(const ast::CommandStmt& command, const SourceLo
   warn(where, message);
 }
 
-// SetFactory("Built-in"); is what every script already runs with; other kernels warn.
+// SetFactory("OpenCASCADE"); SetFactory("Built-in"); select the geometry factory; other
+// kernels warn.
 void Interpreter::executeSetFactory(const ast::CommandStmt& command, const SourceLocation& where) {
   if (command.args.size() == 1) {
-    const std::string factory = evaluateString(*command.args[0]);
-    if (factory == "Built-in" || factory == "built-in" || factory == "Geo") return;
+    if (session_.factories().select(evaluateString(*command.args[0]))) return;
   }
   unsupportedStatement(command, where);
 }
@@ -159,7 +159,7 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
 // Options the geometry kernel reads while entities are defined take effect at once.
 void Interpreter::optionChanged(const std::string& name) {
   if (name == "Geometry.Tolerance")
-    session_.geo().setTolerance(session_.options().number("Geometry.Tolerance"));
+    session_.factory().setTolerance(session_.options().number("Geometry.Tolerance"));
 }
 
 Value Interpreter::optionValue(const ast::Expr& expr) {

@@ -1,6 +1,8 @@
-// Geometry statements that map onto the built-in factory: Point, Line, Curve Loop, Plane
-// Surface, Surface Loop, Volume, Physical groups.
+// Geometry statements that map onto the selected factory: Point, Line, Curve Loop, Plane
+// Surface, Surface Loop, Volume, Box, Physical groups.
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "interpreter/script_interpreter.h"
 #include "api/session.h"
@@ -61,7 +63,7 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
   const std::vector<int> tags = entityTags(value);
-  GeoFactory& geo = session_.geo();
+  GeometryFactory& geo = session_.factory();
   auto requireCount = [&](std::size_t count, const char* what) {
     if (tags.size() != count)
       fail(value.loc, joined(w) + " takes " + what + ", not " + std::to_string(tags.size()) +
@@ -110,10 +112,50 @@ void Interpreter::definePoint(const ast::CommandStmt& command, const SourceLocat
     fail(value.loc, "Point takes {x, y, z} or {x, y, z, size}, not " + std::to_string(xs.size()) +
                         " values");
   try {
-    session_.geo().addPoint(tag, Vec3{xs[0], xs[1], xs[2]}, xs.size() == 4 ? xs[3] : 0.0);
+    session_.factory().addPoint(tag, Vec3{xs[0], xs[1], xs[2]}, xs.size() == 4 ? xs[3] : 0.0);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
+}
+
+// Box(tag) = {x, y, z, dx, dy, dz}; a box of the OpenCASCADE factory (a negative tag: the
+// next free volume tag). The built-in factory has none: there it warns and is ignored.
+void Interpreter::defineBox(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!isDefinition(command)) return unsupportedStatement(command, where);
+  if (command.args.size() != 1) fail(where, "'Box' takes one tag in parentheses");
+  const double tag = evaluateNumber(*command.args[0]);
+  if (tag != std::floor(tag) || tag == 0)
+    fail(command.args[0]->loc, "tag of 'Box' must be a non-zero integer");
+  const std::vector<double> xs = evaluateNumbers(*command.value);
+  if (xs.size() != 6)
+    fail(command.value->loc,
+         "Box takes {x, y, z, dx, dy, dz}, not " + std::to_string(xs.size()) + " values");
+  int made = 0;
+  try {
+    made = session_.factory().addBox(clampedInteger<int>(tag), Vec3{xs[0], xs[1], xs[2]},
+                                     Vec3{xs[3], xs[4], xs[5]});
+  } catch (const UnsupportedOperation&) {
+    warn(where, "'Box' needs SetFactory(\"OpenCASCADE\"); ignored");
+    return;
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+  session_.recordOrigin({3, made}, where);
+}
+
+// The selected factory handed an operation over to the built-in kernel: said once per kind of
+// operation, at the statement that first needed it.
+void Interpreter::reportHandover(const UnsupportedOperation& unsupported) {
+  if (!handedOver_.insert(unsupported.operation()).second) return;
+  static constexpr const char* kDefinitions[] = {
+      "Point",         "Line",    "Circle",       "Ellipse", "Spline",    "BSpline", "Bezier",
+      "Curve Loop",    "Surface", "Surface Loop", "Volume",  "Duplicata", "Extrude",
+      "Plane Surface"};
+  const bool defines = std::find(std::begin(kDefinitions), std::end(kDefinitions),
+                                 unsupported.operation()) != std::end(kDefinitions);
+  warn(statementLocation_ ? *statementLocation_ : SourceLocation{},
+       "'" + unsupported.operation() + "' is not supported by the " + unsupported.factory() +
+           " factory yet; the built-in kernel " + (defines ? "builds it" : "carries it out"));
 }
 
 // Circle(tag) = {start, center, end}: an arc of at most half a turn. Other forms (the
@@ -124,7 +166,7 @@ void Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceL
   if (evaluateNumbers(*command.value).size() != 3) return unsupportedStatement(command, where);
   const std::vector<int> points = entityTags(*command.value);
   try {
-    session_.geo().addCircleArc(tag, points[0], points[1], points[2]);
+    session_.factory().addCircleArc(tag, points[0], points[1], points[2]);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -144,7 +186,7 @@ void Interpreter::definePhysical(const ast::CommandStmt& command, int dim,
                                  const SourceLocation& where) {
   if (command.args.empty() || command.args.size() > 2)
     fail(where, "'" + joined(command.words) + "' takes a tag, a name, or a name and a tag");
-  GeoFactory& geo = session_.geo();
+  GeometryFactory& geo = session_.factory();
   Value first = evaluate(*command.args[0]);
   std::string name;
   int tag = 0;
@@ -171,7 +213,7 @@ void Interpreter::definePhysical(const ast::CommandStmt& command, int dim,
 // in use (all dimensions), as Gmsh numbers them.
 int Interpreter::physicalTagFor(int dim, const std::string& name) const {
   int largest = 0;
-  for (const auto& [id, group] : session_.geo().physicalGroups()) {
+  for (const auto& [id, group] : session_.factory().physicalGroups()) {
     if (id.dim == dim && group.name == name) return id.tag;
     largest = std::max(largest, id.tag);
   }

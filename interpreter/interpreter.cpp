@@ -42,7 +42,11 @@ Interpreter::Interpreter(Session& session)
     variables_[name] = Value::number(value);
   for (const auto& [name, value] : session.stringOverrides())
     variables_[name] = Value::string(value);
+  session.factories().onHandover(
+      [this](const UnsupportedOperation& unsupported) { reportHandover(unsupported); });
 }
+
+Interpreter::~Interpreter() { session_.factories().onHandover(nullptr); }
 
 void Interpreter::runFile(const std::string& path) {
   auto text = readFile(path);
@@ -76,6 +80,7 @@ void Interpreter::execute(const ast::StmtList& statements) {
 
 void Interpreter::execute(const ast::Stmt& statement) {
   const SourceLocation& where = statement.loc;
+  statementLocation_ = &where;
   std::visit(
       [&](const auto& node) {
         using Node = std::decay_t<decltype(node)>;

@@ -28,7 +28,7 @@ void Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceL
   // Like Gmsh, tags of no point are skipped (scripts often give a whole range of tags).
   std::vector<int> missing;
   std::erase_if(points, [&](int tag) {
-    if (session_.geo().hasPoint(tag)) return false;
+    if (session_.factory().hasPoint(tag)) return false;
     missing.push_back(tag);
     return true;
   });
@@ -40,7 +40,7 @@ void Interpreter::executeMeshSize(const ast::CommandStmt& command, const SourceL
   if (!std::isfinite(size) || size < 0)
     fail(command.value->loc, "mesh size must be a finite number >= 0");
   try {
-    session_.geo().setMeshSize(points, size);
+    session_.factory().setMeshSize(points, size);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }

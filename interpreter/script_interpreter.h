@@ -14,6 +14,7 @@
 #include "interpreter/value.h"
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
+#include "kernel/geometry_error.h"
 #include "kernel/model.h"
 #include "stdlib/math_functions.h"
 
@@ -31,6 +32,9 @@ class Session;
 class Interpreter {
  public:
   explicit Interpreter(Session& session);
+  ~Interpreter();
+  Interpreter(const Interpreter&) = delete;
+  Interpreter& operator=(const Interpreter&) = delete;
 
   void runFile(const std::string& path);
   void runText(const std::string& text, const std::string& name);
@@ -115,6 +119,8 @@ class Interpreter {
   // entity definitions (geometry_commands.cpp)
   void defineEntity(const ast::CommandStmt& command, const SourceLocation& where);
   void definePoint(const ast::CommandStmt& command, const SourceLocation& where);
+  void defineBox(const ast::CommandStmt& command, const SourceLocation& where);
+  void reportHandover(const UnsupportedOperation& unsupported);
   int physicalTagFor(int dim, const std::string& name) const;
   void defineCircleArc(const ast::CommandStmt& command, const SourceLocation& where);
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);
@@ -219,6 +225,8 @@ class Interpreter {
   std::deque<ast::StmtList> programs_;  // kept alive: macros point into them
   std::vector<std::string> includeStack_;
   mutable std::set<std::string> warned_;
+  const SourceLocation* statementLocation_ = nullptr;  // of the statement being executed
+  std::set<std::string> handedOver_;  // operations reportHandover() has reported
   int callDepth_ = 0;
   int deletedPhysicalTag_ = 0;  // the largest tag of the groups Delete Physicals removed
   RandomEngine random_;

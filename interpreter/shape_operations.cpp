@@ -38,18 +38,7 @@ int Interpreter::entityDimension(const std::vector<std::string>& words) {
   return -1;
 }
 
-std::vector<int> Interpreter::allTags(int dim) const {
-  const GeoFactory& geo = session_.geo();
-  std::vector<int> tags;
-  auto collect = [&](const auto& map) {
-    for (const auto& entry : map) tags.push_back(entry.first);
-  };
-  if (dim == 0) collect(geo.points());
-  if (dim == 1) collect(geo.curves());
-  if (dim == 2) collect(geo.surfaces());
-  if (dim == 3) collect(geo.volumes());
-  return tags;
-}
+std::vector<int> Interpreter::allTags(int dim) const { return session_.factory().tags(dim); }
 
 // The tags of Point{..}, Curve{..}, ... with ':' standing for every entity of the kind.
 std::vector<int> Interpreter::shapeTags(const ast::Expr& shape, int dim) {
@@ -151,7 +140,7 @@ std::vector<EntityId> Interpreter::extrude(const ast::Expr& shape) {
     fail(shape.loc, "Extrude takes {dx, dy, dz}, {{axis}, {point}, angle} or "
                     "{{dx, dy, dz}, {axis}, {point}, angle}");
   const ast::ShapePart& block = shape.parts.back();
-  return session_.geo().extrude(shapesIn(block), motion, extrusionLayers(block));
+  return session_.factory().extrude(shapesIn(block), motion, extrusionLayers(block));
 }
 
 // Operations that produce shapes; nullopt when `shape` is none of them.
@@ -161,13 +150,13 @@ std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr
   // The shapes come last, in braces: { Point{1}; } or, without semicolons, { Duplicata{..} }.
   try {
     if (kind == "Duplicata" && shape.parts.size() == 1)
-      return session_.geo().duplicate(shapesIn(shape.parts[0]));
+      return session_.factory().duplicate(shapesIn(shape.parts[0]));
     if ((kind == "Boundary" || kind == "CombinedBoundary") && shape.parts.size() == 1)
-      return session_.geo().boundary(shapesIn(shape.parts[0]), kind == "CombinedBoundary");
+      return session_.factory().boundary(shapesIn(shape.parts[0]), kind == "CombinedBoundary");
     if (isTransform(kind) && shape.parts.size() == 2) {
       const AffineMap map = transformMap(shape);
       std::vector<EntityId> shapes = shapesIn(shape.parts[1]);
-      session_.geo().transform(shapes, map);
+      session_.factory().transform(shapes, map);
       return shapes;
     }
     if (kind == "Extrude" && shape.parts.size() == 2) return extrude(shape);
@@ -189,7 +178,7 @@ void Interpreter::executeShapeOperation(const ast::CommandStmt& command,
 void Interpreter::executeCoherence(const ast::CommandStmt& command, const SourceLocation& where) {
   if (command.shape || !command.args.empty()) return unsupportedStatement(command, where);
   try {
-    session_.geo().coherence();
+    session_.factory().coherence();
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -201,10 +190,9 @@ void Interpreter::executePeriodicSurface(const ast::CommandStmt& command,
                                          const SourceLocation& where) {
   if (command.shape || command.args.size() != 4) return executePeriodic(command, where);
   try {
-    session_.geo().setPeriodicByCurves(clampedInteger<int>(evaluateNumber(*command.args[0])),
-                                       entityTags(*command.args[1]),
-                                       clampedInteger<int>(evaluateNumber(*command.args[2])),
-                                       entityTags(*command.args[3]));
+    session_.factory().setPeriodicByCurves(
+        clampedInteger<int>(evaluateNumber(*command.args[0])), entityTags(*command.args[1]),
+        clampedInteger<int>(evaluateNumber(*command.args[2])), entityTags(*command.args[3]));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -218,8 +206,9 @@ void Interpreter::executePeriodic(const ast::CommandStmt& command, const SourceL
   if (!transformed) return unsupportedStatement(command, where);
   const int dim = entityDimension({command.words[1]});
   try {
-    session_.geo().setPeriodic(dim, shapeTags(*command.shape, dim), entityTags(*command.value),
-                               transformMap(*command.tail[0].value));
+    session_.factory().setPeriodic(dim, shapeTags(*command.shape, dim),
+                                   entityTags(*command.value),
+                                   transformMap(*command.tail[0].value));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -228,7 +217,7 @@ void Interpreter::executePeriodic(const ast::CommandStmt& command, const SourceL
 void Interpreter::executeDeletePhysicals(const ast::CommandStmt& command,
                                          const SourceLocation& where) {
   if (command.shape) return unsupportedStatement(command, where);
-  GeoFactory& geo = session_.geo();
+  GeometryFactory& geo = session_.factory();
   // newreg keeps counting past the deleted groups, as in Gmsh.
   for (const auto& [id, group] : geo.physicalGroups())
     deletedPhysicalTag_ = std::max(deletedPhysicalTag_, id.tag);
@@ -240,7 +229,7 @@ void Interpreter::deleteShapes(const ast::CommandStmt& command, const SourceLoca
   if (!command.shape || command.shape->parts.size() != 1 || !command.shape->parts[0].isBlock)
     return unsupportedStatement(command, where);
   try {
-    session_.geo().remove(shapesIn(command.shape->parts[0]), command.words.size() == 2);
+    session_.factory().remove(shapesIn(command.shape->parts[0]), command.words.size() == 2);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -251,7 +240,7 @@ void Interpreter::executeCompound(const ast::CommandStmt& command, const SourceL
   if (!command.shape) return unsupportedStatement(command, where);
   const int dim = entityDimension({command.words[1]});
   try {
-    session_.geo().addCompound(dim, shapeTags(*command.shape, dim));
+    session_.factory().addCompound(dim, shapeTags(*command.shape, dim));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -265,7 +254,7 @@ void Interpreter::embedEntities(const ast::CommandStmt& command, const SourceLoc
   const int hostDim = embedding ? entityDimension(command.tail[0].value->words) : -1;
   if (dim < 0 || hostDim < 0) return unsupportedStatement(command, where);
   const ast::Expr& host = *command.tail[0].value;
-  GeoFactory& geo = session_.geo();
+  GeometryFactory& geo = session_.factory();
   try {
     const std::vector<int> tags = shapeTags(*command.shape, dim);
     for (int hostTag : shapeTags(host, hostDim)) geo.embed(dim, tags, hostDim, hostTag);
@@ -280,7 +269,7 @@ void Interpreter::embedEntities(const ast::CommandStmt& command, const SourceLoc
 // Physical Curve{:} lists the tags of the physical curves; Physical Curve{t, ...} the
 // curves of those groups (none for an unknown tag, as in Gmsh).
 Value Interpreter::physicalQuery(const ast::Expr& expr, int dim) {
-  const auto& groups = session_.geo().physicalGroups();
+  const auto& groups = session_.factory().physicalGroups();
   const auto& items = expr.parts[0].items;
   std::vector<double> result;
   if (items.size() == 1 && items[0]->kind == ast::ExprKind::All) {
@@ -305,7 +294,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
     std::vector<double> coordinates;
     for (int tag : shapeTags(expr, 0)) {
       try {
-        Vec3 p = session_.geo().pointCoordinates(tag);
+        Vec3 p = session_.factory().pointCoordinates(tag);
         coordinates.insert(coordinates.end(), {p.x, p.y, p.z});
       } catch (const GeometryError& error) {
         fail(expr.parts[0].items.front()->loc, error.what());
@@ -322,7 +311,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
     BoundingBox box;
     box.include(Vec3{v[0], v[1], v[2]});
     box.include(Vec3{v[3], v[4], v[5]});
-    return Value::list(asDoubles(session_.geo().entitiesInBox(entityDimension({w[0]}), box)));
+    return Value::list(asDoubles(session_.factory().entitiesInBox(entityDimension({w[0]}), box)));
   }
   if (w.size() == 2 && w[0] == "BoundingBox" && entityDimension({w[1]}) >= 0 &&
       expr.parts.size() == 1) {
@@ -330,7 +319,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
     BoundingBox box;
     try {
       for (int tag : shapeTags(expr, boxDim))
-        box.include(session_.geo().boundingBox(EntityId{boxDim, std::abs(tag)}));
+        box.include(session_.factory().boundingBox(EntityId{boxDim, std::abs(tag)}));
     } catch (const GeometryError& error) {
       fail(expr.loc, error.what());
     }
@@ -339,7 +328,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
   }
   if (w == Words{"PointsOf"} && expr.parts.size() == 1 && expr.parts[0].isBlock) {
     try {
-      return Value::list(asDoubles(session_.geo().pointsOf(shapesIn(expr.parts[0]))));
+      return Value::list(asDoubles(session_.factory().pointsOf(shapesIn(expr.parts[0]))));
     } catch (const GeometryError& error) {
       fail(expr.loc, error.what());
     }

@@ -58,7 +58,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"BooleanUnion ...", &Interpreter::unsupportedStatement},
       {"Boundary", &Interpreter::executeShapeOperation},
       {"BoundingBox ...", &Interpreter::skipInBatch},
-      {"Box ...", &Interpreter::unsupportedStatement},
+      {"Box", &Interpreter::defineBox},
       {"Chamfer ...", &Interpreter::unsupportedStatement},
       {"Characteristic Length", &Interpreter::executeMeshSize},
       {"Circle", &Interpreter::defineCircleArc},

@@ -12,6 +12,10 @@ struct ParamBox {
   Interval u, v;
 };
 
+// What a curve is, as the script or the CAD model defined it. Other: none of these (or not
+// known), to be recognised from its shape if it matters.
+enum class CurveKind { Line, CircleArc, EllipseArc, Spline, BSpline, Bezier, Other };
+
 // The shape of a curve: a map from a parameter interval to space. Built-in and OpenCASCADE
 // curves both implement it; the mesher only sees this interface.
 class CurveGeometry {
@@ -21,11 +25,20 @@ class CurveGeometry {
   virtual Vec3 point(double t) const = 0;
   virtual Vec3 firstDerivative(double t) const = 0;
   virtual Vec3 secondDerivative(double t) const = 0;
+
+  virtual CurveKind kind() const { return CurveKind::Other; }
+  // The angle an arc of circle or ellipse spans (for an ellipse, its parametric angle). The
+  // default, the length of the parameter range, is that angle for a curve parametrized by
+  // its angle.
+  virtual double arcAngle() const { return range().max - range().min; }
 };
 
 struct SurfaceDerivatives {
   Vec3 du, dv;
 };
+
+// What a surface is, as the script or the CAD model defined it; Other when none of these.
+enum class SurfaceKind { Plane, Cylinder, Cone, Sphere, Torus, BSpline, Bezier, Other };
 
 // The shape of a surface: a map from a parameter box to space.
 class SurfaceGeometry {
@@ -36,7 +49,8 @@ class SurfaceGeometry {
   virtual SurfaceDerivatives firstDerivatives(Vec2 uv) const = 0;
   // Parameters of the surface point closest to p.
   virtual Vec2 project(Vec3 p) const = 0;
-  virtual bool isPlane() const { return false; }
+  virtual SurfaceKind kind() const { return SurfaceKind::Other; }
+  virtual bool isPlane() const { return kind() == SurfaceKind::Plane; }
 };
 
 }  // namespace geomesh

@@ -12,4 +12,20 @@ class GeometryError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An operation a geometry factory does not offer (yet): names the operation, as scripts name
+// it ("Point", "Box", "Extrude"), and the factory ("Built-in", "OpenCASCADE").
+class UnsupportedOperation : public GeometryError {
+ public:
+  UnsupportedOperation(std::string operation, std::string factory)
+      : GeometryError("'" + operation + "' is not supported by the " + factory + " factory"),
+        operation_(std::move(operation)),
+        factory_(std::move(factory)) {}
+
+  const std::string& operation() const { return operation_; }
+  const std::string& factory() const { return factory_; }
+
+ private:
+  std::string operation_, factory_;
+};
+
 }  // namespace geomesh

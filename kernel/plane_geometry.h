@@ -30,7 +30,7 @@ class PlaneGeometry final : public SurfaceGeometry {
   Vec3 point(Vec2 uv) const override { return origin_ + uv.u * uAxis_ + uv.v * vAxis_; }
   SurfaceDerivatives firstDerivatives(Vec2) const override { return {uAxis_, vAxis_}; }
   Vec2 project(Vec3 p) const override;
-  bool isPlane() const override { return true; }
+  SurfaceKind kind() const override { return SurfaceKind::Plane; }
 
   Vec3 origin() const { return origin_; }
   Vec3 normal() const { return cross(uAxis_, vAxis_); }

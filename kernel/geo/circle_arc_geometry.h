@@ -17,6 +17,8 @@ class CircleArcGeometry final : public CurveGeometry {
   Vec3 point(double t) const override;
   Vec3 firstDerivative(double t) const override;
   Vec3 secondDerivative(double t) const override;
+  CurveKind kind() const override { return CurveKind::CircleArc; }
+  double arcAngle() const override { return angle_; }
 
   double angle() const { return angle_; }
   Vec3 center() const { return center_; }

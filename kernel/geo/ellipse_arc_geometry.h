@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "kernel/geometry.h"
@@ -18,6 +19,8 @@ class EllipseArcGeometry final : public CurveGeometry {
   Vec3 point(double t) const override;
   Vec3 firstDerivative(double t) const override;
   Vec3 secondDerivative(double t) const override;
+  CurveKind kind() const override { return CurveKind::EllipseArc; }
+  double arcAngle() const override { return std::abs(sweep()); }
 
   double sweep() const { return end_ - start_; }
 

@@ -199,7 +199,17 @@ void GeoFactory::addCompound(int dim, const std::vector<int>& tags) {
   }
 }
 
-bool GeoFactory::hasPoint(int tag) const { return points_.contains(tag); }
+std::vector<int> GeoFactory::tags(int dim) const {
+  std::vector<int> tags;
+  auto collect = [&](const auto& map) {
+    for (const auto& entry : map) tags.push_back(entry.first);
+  };
+  if (dim == 0) collect(points_);
+  if (dim == 1) collect(curves_);
+  if (dim == 2) collect(surfaces_);
+  if (dim == 3) collect(volumes_);
+  return tags;
+}
 
 bool GeoFactory::contains(EntityId e) const {
   switch (e.dim) {

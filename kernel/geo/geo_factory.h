@@ -9,6 +9,7 @@
 
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
+#include "kernel/geometry_factory.h"
 #include "kernel/model.h"
 
 namespace geomesh {
@@ -17,84 +18,86 @@ namespace geomesh {
 // one call at a time, as a script states them, and checked immediately (an undefined point or
 // curve throws GeometryError naming its tag); synchronize() builds the Model from them.
 // As in Gmsh, a tag cannot be redefined: reusing one throws ("Point 1 already exists").
-class GeoFactory {
+class GeoFactory final : public GeometryFactory {
  public:
-  void addPoint(int tag, Vec3 xyz, double meshSize);
-  void addLine(int tag, int startPoint, int endPoint);
+  std::string name() const override { return "Built-in"; }
+
+  void addPoint(int tag, Vec3 xyz, double meshSize) override;
+  void addLine(int tag, int startPoint, int endPoint) override;
   // An arc of circle around `centerPoint`, of angle at most pi (Circle(tag) = {start, center,
   // end}). The two ends must be at about the same distance from the center (within 10%, as the
   // built-in kernel allows; the radius then varies along the arc so that it joins both).
-  void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint);
+  void addCircleArc(int tag, int startPoint, int centerPoint, int endPoint) override;
   // An arc of ellipse (Ellipse(tag) = {start, center, majorAxisPoint, end}), less than half a
   // turn; see makeEllipseArc.
-  void addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint, int endPoint);
+  void addEllipseArc(int tag, int startPoint, int centerPoint, int majorAxisPoint,
+                     int endPoint) override;
   // Spline(tag) = {..}: an interpolating spline through the points (closed when the first
   // point is also the last).
-  void addSpline(int tag, const std::vector<int>& points);
+  void addSpline(int tag, const std::vector<int>& points) override;
   // BSpline(tag) = {..}: a uniform cubic B-spline of these control points (clamped at its
   // ends; periodic when the first point is also the last).
-  void addBSpline(int tag, const std::vector<int>& points);
+  void addBSpline(int tag, const std::vector<int>& points) override;
   // Bezier(tag) = {..}: a Bezier curve of these control points.
-  void addBezier(int tag, const std::vector<int>& points);
+  void addBezier(int tag, const std::vector<int>& points) override;
   // A closed chain of curves; signed tags (negative: reversed). Curves given in any order
   // and orientation are chained as the built-in kernel does; a loop that does not close
   // throws, naming the gap.
-  void addCurveLoop(int tag, std::vector<int> curves);
+  void addCurveLoop(int tag, std::vector<int> curves) override;
   // First loop: outer boundary; others: holes.
-  void addPlaneSurface(int tag, std::vector<int> curveLoops);
-  void addSurfaceLoop(int tag, std::vector<int> surfaces);
-  void addVolume(int tag, std::vector<int> surfaceLoops);
+  void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
+  void addSurfaceLoop(int tag, std::vector<int> surfaces) override;
+  void addVolume(int tag, std::vector<int> surfaceLoops) override;
   // Creates the group or, if (dim, tag) exists, appends to it. An empty name keeps the old one.
   void addPhysicalGroup(int dim, int tag, const std::string& name,
-                        const std::vector<int>& entities);
+                        const std::vector<int>& entities) override;
 
   // Surface(tag) = {loop}: a surface filling a loop of 3 or 4 curves by transfinite
   // interpolation of its sides.
-  void addFillingSurface(int tag, std::vector<int> curveLoops);
+  void addFillingSurface(int tag, std::vector<int> curveLoops) override;
   // Compound Curve{..} / Compound Surface{..}: meshed as one; recorded on each entity.
-  void addCompound(int dim, const std::vector<int>& tags);
+  void addCompound(int dim, const std::vector<int>& tags) override;
   // Physical X(tag) -= {..}: removes entities from a group (the group goes when emptied).
-  void removeFromPhysicalGroup(int dim, int tag, const std::vector<int>& entities);
+  void removeFromPhysicalGroup(int dim, int tag, const std::vector<int>& entities) override;
   // MeshSize{points} = size; (Characteristic Length): the prescribed mesh size at the points.
-  void setMeshSize(const std::vector<int>& points, double size);
+  void setMeshSize(const std::vector<int>& points, double size) override;
   // Delete Physicals;
-  void clearPhysicalGroups() { physicals_.clear(); }
+  void clearPhysicalGroups() override { physicals_.clear(); }
 
-  bool hasPoint(int tag) const;
-  bool contains(EntityId e) const;  // dims 0..3
-  Vec3 pointCoordinates(int tag) const;  // throws if undefined
+  bool contains(EntityId e) const override;  // dims 0..3
+  Vec3 pointCoordinates(int tag) const override;  // throws if undefined
   // Largest tag given so far; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
   // Deleting the entity of the largest tag lowers it by one; Coherence resets it to the
   // largest tag in use. 0 when none.
-  int maxTag(int kind) const;
-  enum : int { kCurveLoop = 4, kSurfaceLoop = 5 };
-  const std::map<EntityId, PhysicalGroup>& physicalGroups() const { return physicals_; }
+  int maxTag(int kind) const override;
+  std::vector<int> tags(int dim) const override;
+  const std::map<EntityId, PhysicalGroup>& physicalGroups() const override { return physicals_; }
 
   // Transformations (kernel/geo/geo_transform.cpp). Shapes are (dim, tag) pairs; a negative
   // tag is accepted (orientation is ignored). Every point of the shapes, down to the control
   // points of their curves, moves once; then coincident entities are merged (Coherence).
-  void transform(const std::vector<EntityId>& shapes, const AffineMap& map);
+  void transform(const std::vector<EntityId>& shapes, const AffineMap& map) override;
   // Duplicata{..}: copies with new tags, numbered as the built-in kernel of Gmsh numbers
   // them (a surface: the surface first, then its curves with their points; a negative curve
   // tag copies the reversed curve). Returns the copies' (dim, tag) in the order of `shapes`.
-  std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes);
+  std::vector<EntityId> duplicate(const std::vector<EntityId>& shapes) override;
   // Delete{..}: removes the shapes that nothing else uses (silently keeps the others);
   // recursive: then also their boundaries, down to points, when no longer used.
-  void remove(const std::vector<EntityId>& shapes, bool recursive);
+  void remove(const std::vector<EntityId>& shapes, bool recursive) override;
   // Boundary{..}: the boundary of each shape, one dimension lower, as Gmsh gives it: a
   // curve's ends in its direction (reversed for a negative tag); a surface's curves and a
   // volume's surfaces in loop order, as positive tags. Combined: entities shared by two of
   // the shapes cancel out; the others come in ascending tags.
-  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes, bool combined) const;
+  std::vector<EntityId> boundary(const std::vector<EntityId>& shapes, bool combined) const override;
   // PointsOf{..}: every point of the shapes, once each, in order of appearance.
-  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const;
-  BoundingBox boundingBox(EntityId shape) const;
+  std::vector<int> pointsOf(const std::vector<EntityId>& shapes) const override;
+  BoundingBox boundingBox(EntityId shape) const override;
   // Point/Curve/Surface/Volume In BoundingBox{..}: entities of `dim` inside the box (to the
   // geometric tolerance), ascending tags.
-  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const;
+  std::vector<int> entitiesInBox(int dim, const BoundingBox& box) const override;
   // Coherence: merges points closer than the tolerance (the lowest tag stays), then the
   // curves and surfaces that have become identical.
-  void coherence();
+  void coherence() override;
 
   // Extrude{..}{shapes} (kernel/geo/geo_extrude.cpp): for each shape in turn, its top (its
   // image at the end of the motion), the entity swept (one dimension higher), then the
@@ -105,24 +108,24 @@ class GeoFactory {
   // sweeps nothing (the surface of a curve touching the axis has three sides; a curve on
   // the axis sweeps no surface).
   std::vector<EntityId> extrude(const std::vector<EntityId>& shapes, const ExtrusionMotion& motion,
-                                const ExtrusionLayers& layers);
+                                const ExtrusionLayers& layers) override;
 
   // Point{..} In Curve/Surface/Volume{t}; Curve{..} In Surface/Volume{t}; Surface{..} In
   // Volume{t} (kernel/geo/geo_embed.cpp).
-  void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag);
+  void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag) override;
   // Periodic Curve/Surface{slaves} = {masters} + the transform taking masters to slaves.
   void setPeriodic(int dim, const std::vector<int>& slaves, const std::vector<int>& masters,
-                   const AffineMap& map);
+                   const AffineMap& map) override;
   // Periodic Surface slave {curves} = master {curves}: the older form, without a transform. The
   // transform is the rigid motion that takes each master curve's end points onto those of the
   // slave curve given at the same place (negative tags: reversed curves).
   void setPeriodicByCurves(int slave, const std::vector<int>& slaveCurves, int master,
-                           const std::vector<int>& masterCurves);
+                           const std::vector<int>& masterCurves) override;
 
   // Geometry.Tolerance: coincident points and non-planar plane surfaces are detected
   // relative to this fraction of the model's size (the diagonal of its bounding box).
-  void setTolerance(double relativeTolerance) { tolerance_ = relativeTolerance; }
-  double tolerance() const { return tolerance_; }
+  void setTolerance(double relativeTolerance) override { tolerance_ = relativeTolerance; }
+  double tolerance() const override { return tolerance_; }
   // Geometry.AutoCoherence (default on): transformations and extrusions end with Coherence.
   void setAutoCoherence(bool on) { autoCoherence_ = on; }
   // Geometry.ExtrudeReturnLateralEntities (default on): extrusions list their lateral
@@ -132,12 +135,15 @@ class GeoFactory {
   // many steps (at least 1).
   void setExtrudeSplineSteps(int steps) { twistSteps_ = steps < 1 ? 1 : steps; }
 
-  // Replaces the model's geometry with this factory's entities.
-  void synchronize(Model& model) const;
-  void clear();
+  // Adds this factory's entities and physical groups to the model (see GeometryFactory).
+  // Physical groups keep only the entities the model holds: synchronize other factories first.
+  void synchronize(Model& model) const override;
+  void clear() override;
+  // kernel/geo/geo_unrolled_writer.cpp
+  void writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks) const override;
 
   // The definitions, as the unrolled .geo writer lists them.
-  enum class CurveKind { Line, CircleArc, EllipseArc, Spline, BSpline, Bezier };
+  using CurveKind = geomesh::CurveKind;  // all but Other
   enum class SurfaceKind { Plane, Filling, Swept };
   struct Curve {
     int tag;

@@ -103,7 +103,6 @@ std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface
 
 
 void GeoFactory::synchronize(Model& model) const {
-  model.clear();
   for (const auto& [tag, p] : points_) model.addPoint(p);
   for (const auto& [tag, c] : curves_) {
     ModelCurve& curve = model.addCurve(ModelCurve{tag, c.start(), c.end(), curveGeometry(c)});

@@ -263,14 +263,7 @@ std::vector<EntityId> GeoFactory::boundary(const std::vector<EntityId>& shapes,
         for (int s : shell) out.push_back({2, std::abs(s)});
     }
   }
-  if (!combined) return out;
-  // Entities bounding two of the shapes cancel out; the others come in ascending tags.
-  std::map<EntityId, int> count;
-  for (EntityId e : out) ++count[e];
-  std::vector<EntityId> kept;
-  for (const auto& [e, n] : count)
-    if (n == 1) kept.push_back(e);
-  return kept;
+  return combined ? cancelShared(out) : out;
 }
 
 std::vector<int> GeoFactory::pointsOf(const std::vector<EntityId>& shapes) const {

@@ -13,6 +13,7 @@ class LineGeometry final : public CurveGeometry {
   Vec3 point(double t) const override { return start_ + t * (end_ - start_); }
   Vec3 firstDerivative(double) const override { return end_ - start_; }
   Vec3 secondDerivative(double) const override { return {}; }
+  CurveKind kind() const override { return CurveKind::Line; }
 
   // Parameter of the point of the (infinite) line closest to p.
   double project(Vec3 p) const;

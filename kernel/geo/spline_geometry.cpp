@@ -39,8 +39,9 @@ std::size_t knotSpan(const std::vector<double>& knots, int degree, std::size_t p
 
 }  // namespace
 
-BSplineGeometry::BSplineGeometry(std::vector<Vec3> points, int degree, std::vector<double> knots)
-    : points_(std::move(points)), degree_(degree), knots_(std::move(knots)) {
+BSplineGeometry::BSplineGeometry(std::vector<Vec3> points, int degree, std::vector<double> knots,
+                                 CurveKind kind)
+    : points_(std::move(points)), degree_(degree), knots_(std::move(knots)), kind_(kind) {
   if (degree_ < 1 || points_.size() < static_cast<std::size_t>(degree_) + 1 ||
       knots_.size() != points_.size() + static_cast<std::size_t>(degree_) + 1)
     throw GeometryError("B-spline: " + std::to_string(points_.size()) +
@@ -76,7 +77,7 @@ BSplineGeometry BSplineGeometry::bezier(std::vector<Vec3> points) {
   const int degree = static_cast<int>(points.size()) - 1;
   std::vector<double> knots(points.size(), 0.0);
   knots.insert(knots.end(), points.size(), 1.0);
-  return BSplineGeometry(std::move(points), degree, std::move(knots));
+  return BSplineGeometry(std::move(points), degree, std::move(knots), CurveKind::Bezier);
 }
 
 // Derivatives come from the basis of lower degree: d/du N_{i,p} = p N_{i,p-1} / (k[i+p] - k[i])

@@ -9,9 +9,11 @@ namespace geomesh {
 // A B-spline curve over [0, 1]: `knots` has points.size() + degree + 1 non-decreasing values
 // and the curve is defined for t between knots[degree] and knots[points.size()], which the
 // constructor maps onto [0, 1]. Clamped knots make it start and end at its end points.
+// `kind` says how the script defined it: BSpline or Bezier.
 class BSplineGeometry final : public CurveGeometry {
  public:
-  BSplineGeometry(std::vector<Vec3> points, int degree, std::vector<double> knots);
+  BSplineGeometry(std::vector<Vec3> points, int degree, std::vector<double> knots,
+                  CurveKind kind = CurveKind::BSpline);
 
   // The curves of the built-in kernel, all parametrized over [0, 1]:
   // BSpline: uniform clamped knots, degree 3 (lower when there are fewer than 4 points); a
@@ -24,6 +26,7 @@ class BSplineGeometry final : public CurveGeometry {
   Vec3 point(double t) const override { return evaluate(t, 0); }
   Vec3 firstDerivative(double t) const override { return evaluate(t, 1); }
   Vec3 secondDerivative(double t) const override { return evaluate(t, 2); }
+  CurveKind kind() const override { return kind_; }
 
  private:
   // The `order`-th derivative with respect to the [0, 1] parameter.
@@ -33,6 +36,7 @@ class BSplineGeometry final : public CurveGeometry {
   int degree_;
   std::vector<double> knots_;
   double start_, scale_;  // knot parameter = start_ + t * scale_
+  CurveKind kind_;
 };
 
 // An interpolating (Catmull-Rom) spline through its points, one cubic piece between each two
@@ -47,6 +51,7 @@ class CatmullRomGeometry final : public CurveGeometry {
   Vec3 point(double t) const override { return evaluate(t, 0); }
   Vec3 firstDerivative(double t) const override { return evaluate(t, 1); }
   Vec3 secondDerivative(double t) const override { return evaluate(t, 2); }
+  CurveKind kind() const override { return CurveKind::Spline; }
 
  private:
   Vec3 evaluate(double t, int order) const;

@@ -81,6 +81,7 @@ class SphericalPatchGeometry final : public SurfaceGeometry {
   Vec3 point(Vec2 uv) const override;
   SurfaceDerivatives firstDerivatives(Vec2 uv) const override;
   Vec2 project(Vec3 p) const override;
+  SurfaceKind kind() const override { return SurfaceKind::Sphere; }
 
  private:
   Vec3 flatPoint(Vec2 uv) const;

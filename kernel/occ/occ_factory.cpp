@@ -1,6 +1,8 @@
 #include "kernel/occ/occ_factory.h"
 
+#include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
@@ -15,8 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_geometry.h"
@@ -28,6 +32,7 @@ namespace geomesh {
 struct OccShapes {
   std::map<int, TopoDS_Shape> byTag[4];
   TopTools_DataMapOfShapeInteger tags[4];
+  std::map<int, double> meshSizes;  // vertex tag -> MeshSize
 
   int tagOf(int dim, const TopoDS_Shape& s) const { return tags[dim].Find(s); }
   int maxTag(int dim) const { return byTag[dim].empty() ? 0 : byTag[dim].rbegin()->first; }
@@ -98,8 +103,89 @@ double OccFactory::volume(int tag) const {
   return properties.Mass();
 }
 
-int OccFactory::maxTag(int dim) const {
-  return dim >= 0 && dim <= 3 ? shapes_->maxTag(dim) : 0;
+int OccFactory::maxTag(int kind) const {
+  return kind >= 0 && kind <= 3 ? shapes_->maxTag(kind) : 0;
+}
+
+bool OccFactory::contains(EntityId e) const {
+  return e.dim >= 0 && e.dim <= 3 && shapes_->byTag[e.dim].contains(e.tag);
+}
+
+std::vector<int> OccFactory::tags(int dim) const {
+  std::vector<int> tags;
+  if (dim >= 0 && dim <= 3)
+    for (const auto& entry : shapes_->byTag[dim]) tags.push_back(entry.first);
+  return tags;
+}
+
+Vec3 OccFactory::pointCoordinates(int tag) const {
+  if (!contains({0, tag})) throw GeometryError("Point " + std::to_string(tag) + " is not defined");
+  const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shapes_->byTag[0].at(tag)));
+  return {p.X(), p.Y(), p.Z()};
+}
+
+namespace {
+
+// The shape of (dim, |tag|); throws GeometryError naming `operation` when there is none.
+const TopoDS_Shape& requireShape(const OccShapes& s, EntityId shape, const char* operation) {
+  const int tag = shape.tag < 0 ? -shape.tag : shape.tag;
+  if (shape.dim >= 0 && shape.dim <= 3)
+    if (auto it = s.byTag[shape.dim].find(tag); it != s.byTag[shape.dim].end()) return it->second;
+  throw GeometryError(std::string(operation) + ": entity (" + std::to_string(shape.dim) + ", " +
+                      std::to_string(tag) + ") is not defined");
+}
+
+}  // namespace
+
+std::vector<int> OccFactory::entitiesInBox(int dim, const BoundingBox& box) const {
+  std::vector<int> inside;
+  if (dim < 0 || dim > 3 || box.empty()) return inside;
+  const double tol = 1e-8 * distance(box.min, box.max);
+  auto within = [&](const BoundingBox& b) {
+    return !b.empty() && b.min.x >= box.min.x - tol && b.min.y >= box.min.y - tol &&
+           b.min.z >= box.min.z - tol && b.max.x <= box.max.x + tol &&
+           b.max.y <= box.max.y + tol && b.max.z <= box.max.z + tol;
+  };
+  for (const auto& [tag, shape] : shapes_->byTag[dim])
+    if (within(boundingBox({dim, tag}))) inside.push_back(tag);
+  return inside;
+}
+
+std::vector<int> OccFactory::pointsOf(const std::vector<EntityId>& shapes) const {
+  for (EntityId shape : shapes) requireShape(*shapes_, shape, "PointsOf");
+  std::vector<int> points;
+  for (EntityId shape : shapes) {
+    const TopoDS_Shape& s = requireShape(*shapes_, shape, "PointsOf");
+    for (TopExp_Explorer it(s, TopAbs_VERTEX); it.More(); it.Next()) {
+      const int tag = shapes_->tagOf(0, it.Current());
+      if (std::find(points.begin(), points.end(), tag) == points.end()) points.push_back(tag);
+    }
+  }
+  return points;
+}
+
+void OccFactory::setMeshSize(const std::vector<int>& points, double size) {
+  for (int p : points)
+    if (!contains({0, p}))
+      throw GeometryError("MeshSize: point " + std::to_string(p) + " is not defined");
+  for (int p : points) shapes_->meshSizes[p] = size;
+}
+
+// The box of the shape's vertices and of its curves and surfaces, tight (not enlarged by
+// OpenCASCADE's tolerances).
+BoundingBox OccFactory::boundingBox(EntityId shape) const {
+  if (!contains(shape))
+    throw GeometryError("BoundingBox: entity (" + std::to_string(shape.dim) + ", " +
+                        std::to_string(shape.tag) + ") is not defined");
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shapes_->byTag[shape.dim].at(shape.tag), box, false, false);
+  BoundingBox result;
+  if (box.IsVoid()) return result;
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  result.include(Vec3{x0, y0, z0});
+  result.include(Vec3{x1, y1, z1});
+  return result;
 }
 
 void OccFactory::clear() { shapes_ = std::make_unique<OccShapes>(); }
@@ -125,7 +211,9 @@ namespace {
 void exportPoints(const OccShapes& s, Model& model) {
   for (const auto& [tag, shape] : s.byTag[0]) {
     const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(shape));
-    model.addPoint(ModelPoint{tag, {p.X(), p.Y(), p.Z()}, 0});
+    const auto size = s.meshSizes.find(tag);
+    model.addPoint(
+        ModelPoint{tag, {p.X(), p.Y(), p.Z()}, size == s.meshSizes.end() ? 0 : size->second});
   }
 }
 
@@ -175,5 +263,31 @@ void exportVolumes(const OccShapes& s, Model& model) {
 }
 
 }  // namespace
+
+std::vector<EntityId> OccFactory::boundary(const std::vector<EntityId>& shapes,
+                                           bool combined) const {
+  for (EntityId shape : shapes) requireShape(*shapes_, shape, "Boundary");
+  std::vector<EntityId> out;
+  for (EntityId shape : shapes) {
+    const TopoDS_Shape& s = requireShape(*shapes_, shape, "Boundary");
+    if (shape.dim == 1) {
+      const TopoDS_Edge edge = TopoDS::Edge(s.Oriented(TopAbs_FORWARD));
+      int ends[2] = {shapes_->tagOf(0, TopExp::FirstVertex(edge)),
+                     shapes_->tagOf(0, TopExp::LastVertex(edge))};
+      if (shape.tag < 0) std::swap(ends[0], ends[1]);
+      out.push_back({0, ends[0]});
+      out.push_back({0, ends[1]});
+    } else if (shape.dim == 2) {
+      const TopoDS_Face face = TopoDS::Face(s.Oriented(TopAbs_FORWARD));
+      for (TopExp_Explorer wire(face, TopAbs_WIRE); wire.More(); wire.Next())
+        for (int c : wireLoop(*shapes_, face, TopoDS::Wire(wire.Current())))
+          out.push_back({1, std::abs(c)});
+    } else if (shape.dim == 3) {
+      for (TopExp_Explorer face(s, TopAbs_FACE); face.More(); face.Next())
+        out.push_back({2, shapes_->tagOf(2, face.Current())});
+    }
+  }
+  return combined ? cancelShared(out) : out;
+}
 
 }  // namespace geomesh

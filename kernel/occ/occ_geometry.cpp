@@ -15,6 +15,30 @@ namespace {
 
 Vec3 toVec3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 
+CurveKind curveKind(GeomAbs_CurveType type) {
+  switch (type) {
+    case GeomAbs_Line: return CurveKind::Line;
+    case GeomAbs_Circle: return CurveKind::CircleArc;
+    case GeomAbs_Ellipse: return CurveKind::EllipseArc;
+    case GeomAbs_BSplineCurve: return CurveKind::BSpline;
+    case GeomAbs_BezierCurve: return CurveKind::Bezier;
+    default: return CurveKind::Other;
+  }
+}
+
+SurfaceKind surfaceKind(GeomAbs_SurfaceType type) {
+  switch (type) {
+    case GeomAbs_Plane: return SurfaceKind::Plane;
+    case GeomAbs_Cylinder: return SurfaceKind::Cylinder;
+    case GeomAbs_Cone: return SurfaceKind::Cone;
+    case GeomAbs_Sphere: return SurfaceKind::Sphere;
+    case GeomAbs_Torus: return SurfaceKind::Torus;
+    case GeomAbs_BSplineSurface: return SurfaceKind::BSpline;
+    case GeomAbs_BezierSurface: return SurfaceKind::Bezier;
+    default: return SurfaceKind::Other;
+  }
+}
+
 class OccCurve final : public CurveGeometry {
  public:
   explicit OccCurve(const TopoDS_Edge& edge) : curve_(edge) {}
@@ -33,6 +57,8 @@ class OccCurve final : public CurveGeometry {
     curve_.D2(t, p, d1, d2);
     return toVec3(d2.XYZ());
   }
+  // Circles and ellipses are parametrized by their angle: the default arcAngle() holds.
+  CurveKind kind() const override { return curveKind(curve_.GetType()); }
 
  private:
   BRepAdaptor_Curve curve_;
@@ -54,7 +80,7 @@ class OccSurface final : public SurfaceGeometry {
     return {toVec3(du.XYZ()), toVec3(dv.XYZ())};
   }
   Vec2 project(Vec3 p) const override;
-  bool isPlane() const override { return surface_.GetType() == GeomAbs_Plane; }
+  SurfaceKind kind() const override { return surfaceKind(surface_.GetType()); }
 
  private:
   BRepAdaptor_Surface surface_;

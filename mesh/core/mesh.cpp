@@ -69,6 +69,7 @@ std::size_t Mesh::elementCount(int dim) const {
 
 void Mesh::clear() {
   coords_.clear();
+  sizes_.clear();
   entities_.clear();
 }
 

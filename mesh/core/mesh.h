@@ -50,11 +50,13 @@ struct EntityMesh {
   std::size_t elementCount() const;
 };
 
-// A mesh: node coordinates in one contiguous array and a mesh per model entity.
+// A mesh: node coordinates in one contiguous array, per-node attributes beside it, and a
+// mesh per model entity.
 class Mesh {
  public:
   NodeIndex addNode(Vec3 xyz) {
     coords_.insert(coords_.end(), {xyz.x, xyz.y, xyz.z});
+    if (!sizes_.empty()) sizes_.push_back(0);
     return static_cast<NodeIndex>(coords_.size() / 3 - 1);
   }
   Vec3 node(NodeIndex i) const { return {coords_[3 * i], coords_[3 * i + 1], coords_[3 * i + 2]}; }
@@ -65,7 +67,21 @@ class Mesh {
   }
   std::size_t nodeCount() const { return coords_.size() / 3; }
   std::span<const double> coordinates() const { return coords_; }
-  void reserveNodes(std::size_t n) { coords_.reserve(3 * n); }
+  void reserveNodes(std::size_t n) {
+    coords_.reserve(3 * n);
+    if (!sizes_.empty()) sizes_.reserve(n);
+  }
+
+  // Target sizes: the element size the mesher of a node's entity aimed at there, which the
+  // meshers of the next dimension extend inwards; 0 where none was set. The array exists
+  // once a size is set, and then grows with the nodes (one value per node).
+  double nodeSize(NodeIndex i) const { return i < sizes_.size() ? sizes_[i] : 0; }
+  void setNodeSize(NodeIndex i, double size) {
+    if (sizes_.empty()) sizes_.assign(nodeCount(), 0);
+    sizes_[i] = size;
+  }
+  // All of them at once, for loops over many nodes (empty if none was set).
+  std::span<const double> nodeSizes() const { return sizes_; }
 
   EntityMesh& entity(EntityId e);  // finds or creates
   const EntityMesh* find(EntityId e) const;
@@ -75,6 +91,7 @@ class Mesh {
 
  private:
   std::vector<double> coords_;
+  std::vector<double> sizes_;  // empty, or one per node
   std::map<EntityId, EntityMesh> entities_;
 };
 

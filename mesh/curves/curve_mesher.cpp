@@ -158,8 +158,7 @@ void addLines(const std::vector<NodeIndex>& chain, EntityMesh& em) {
 // Nodes at the given fractions of the arc length (Transfinite Curve); each new node's size is
 // the mean length of its two segments.
 void placeTransfinite(const ModelCurve& curve, const ArcLengthTable& arc,
-                      const std::vector<double>& fractions, Mesh& mesh,
-                      std::vector<double>& nodeSizes) {
+                      const std::vector<double>& fractions, Mesh& mesh) {
   const CurveGeometry& g = *curve.geometry;
   const Interval range = g.range();
   EntityMesh& em = mesh.entity({1, curve.tag});
@@ -171,8 +170,7 @@ void placeTransfinite(const ModelCurve& curve, const ArcLengthTable& arc,
                          ? arc.parameterAt(fractions[k] * arc.length())
                          : range.min + (range.max - range.min) * fractions[k];
     const NodeIndex node = mesh.addNode(g.point(t));
-    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
-    nodeSizes[node] = 0.5 * arc.length() * (fractions[k + 1] - fractions[k - 1]);
+    mesh.setNodeSize(node, 0.5 * arc.length() * (fractions[k + 1] - fractions[k - 1]));
     em.nodes.push_back(node);
     em.parametric.push_back(t);
     chain.push_back(node);
@@ -190,7 +188,7 @@ NodeIndex pointNode(const Mesh& mesh, int pointTag) {
 }
 
 void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
-               std::vector<double>& nodeSizes, const SizeFields* fields) {
+               const SizeFields* fields) {
   const EntityId id{1, curve.tag};
   const ModelPoint* start = model.point(curve.startPoint);
   const ModelPoint* end = model.point(curve.endPoint);
@@ -207,7 +205,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   em.blocks.clear();
   const auto& transfinite = model.meshConstraints().transfiniteCurves;
   if (const auto it = transfinite.find(curve.tag); it != transfinite.end()) {
-    placeTransfinite(curve, arc, transfiniteFractions(it->second), mesh, nodeSizes);
+    placeTransfinite(curve, arc, transfiniteFractions(it->second), mesh);
     return;
   }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
@@ -225,8 +223,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
     const double t = arc.length() > 0 ? arc.parameterAt(sigma)
                                       : range.min + (range.max - range.min) * k / segments;
     const NodeIndex node = mesh.addNode(g.point(t));
-    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
-    nodeSizes[node] = integral.size(sigma);
+    mesh.setNodeSize(node, integral.size(sigma));
     em.nodes.push_back(node);
     em.parametric.push_back(t);
     chain.push_back(node);

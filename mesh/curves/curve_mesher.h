@@ -13,13 +13,12 @@ namespace geomesh {
 // size varies linearly in arc length between the sizes of the end points (SizeRules); the
 // curve gets as many segments as the integral of 1/size, rounded up unless within 1% above
 // a whole number, and at least SizeRules::minimumSegments (3 when closed). Its nodes split that
-// integral into equal parts. Adds the
-// interior nodes with their parameters and the Line2 elements from start to end; nodeSizes (indexed
-// by node) receives the target size at each new node.
+// integral into equal parts. Adds the interior nodes with their parameters and target sizes
+// (Mesh::setNodeSize) and the Line2 elements from start to end.
 // With a background size field or Mesh.MeshSizeFromCurvature, the target size is the smallest
 // of those bounds (Transfinite Curve constraints override all of them).
 void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rules, Mesh& mesh,
-               std::vector<double>& nodeSizes, const SizeFields* fields = nullptr);
+               const SizeFields* fields = nullptr);
 
 // The node of a meshed model point; throws MeshError if the point has no mesh.
 NodeIndex pointNode(const Mesh& mesh, int pointTag);

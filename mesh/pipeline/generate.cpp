@@ -15,9 +15,10 @@
 #include "mesh/quads/recombine.h"
 #include "mesh/sizes/size_rules.h"
 #include "mesh/quads/subdivision.h"
+#include "mesh/surfaces/surface_algorithms.h"
 #include "mesh/surfaces/surface_mesher.h"
 #include "mesh/structured/transfinite_surface.h"
-#include "mesh/volumes/volume_mesher.h"
+#include "mesh/volumes/volume_algorithms.h"
 
 namespace geomesh {
 namespace {
@@ -40,12 +41,12 @@ class StageTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
-void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields, Mesh& mesh,
-                std::vector<double>& nodeSizes) {
+void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields,
+                Mesh& mesh) {
   for (const auto& [tag, point] : model.points()) {
     const NodeIndex node = mesh.addNode(point.xyz);
     const double field = fields.at(point.xyz, {0, tag});
-    nodeSizes.push_back(rules.finish(std::min(rules.pointSize(point), field)));
+    mesh.setNodeSize(node, rules.finish(std::min(rules.pointSize(point), field)));
     EntityMesh& em = mesh.entity({0, tag});
     em.nodes.push_back(node);
     em.block(ElementType::Point1).nodes.push_back(node);
@@ -97,61 +98,30 @@ std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
   return angle;
 }
 
-// The name of a 2D algorithm of the Mesh.Algorithm list that geomesh does not have.
-const char* missingAlgorithmName(int algorithm) {
-  switch (algorithm) {
-    case algorithm2d::kBamg: return "BAMG";
-    case algorithm2d::kPacking: return "Packing of Parallelograms";
-    case algorithm2d::kQuasiStructuredQuads: return "Quasi-structured Quad";
-    default: return nullptr;
-  }
-}
-
-bool isAvailable(int algorithm) {
-  using namespace algorithm2d;
-  for (int a : {kMeshAdapt, kAutomatic, kInitialMeshOnly, kDelaunay, kFrontalDelaunay,
-                kFrontalDelaunayQuads})
-    if (algorithm == a) return true;
-  return false;
-}
-
-// "N (name) is not available" or "N is not a 2D meshing algorithm".
-std::string whyUnavailable(int algorithm) {
-  const char* name = missingAlgorithmName(algorithm);
-  if (!name) return std::to_string(algorithm) + " is not a 2D meshing algorithm";
-  return std::to_string(algorithm) + " (" + name + ") is not available";
-}
-
-// MeshAlgorithm Surface{t} = n, else Mesh.Algorithm; what is not available falls back to
-// Frontal-Delaunay (the global option's warning is given once by meshSurfaces). Automatic
-// is Delaunay on planes and MeshAdapt on the other surfaces.
-int surfaceAlgorithm(const SurfaceStage& stage, const ModelSurface& surface) {
+// MeshAlgorithm Surface{t} = n, else Mesh.Algorithm; what is not available falls back (the
+// global option's warning is given once by meshSurfaces).
+const SurfaceAlgorithm& surfaceAlgorithm(const SurfaceStage& stage, const ModelSurface& surface) {
   const auto& chosen = stage.model.meshConstraints().surfaceAlgorithms;
-  int algorithm = stage.options.algorithm2D;
-  if (const auto it = chosen.find(surface.tag); it != chosen.end()) {
-    algorithm = it->second;
-    if (!isAvailable(algorithm))
-      stage.log.warning("MeshAlgorithm of surface " + std::to_string(surface.tag) + ": " +
-                        whyUnavailable(algorithm) + "; meshed with Frontal-Delaunay (6)");
-  }
-  if (!isAvailable(algorithm)) return algorithm2d::kFrontalDelaunay;
-  if (algorithm != algorithm2d::kAutomatic) return algorithm;
-  const bool plane = surface.geometry && surface.geometry->isPlane();
-  return plane ? algorithm2d::kDelaunay : algorithm2d::kMeshAdapt;
+  const auto it = chosen.find(surface.tag);
+  if (it == chosen.end()) return surfaceAlgorithmFor(stage.options.algorithm2D);
+  const std::string why = whyUnavailable(it->second);
+  if (!why.empty())
+    stage.log.warning("MeshAlgorithm of surface " + std::to_string(surface.tag) + ": " + why +
+                      "; meshed with " + fallbackText(it->second));
+  return surfaceAlgorithmFor(it->second);
 }
 
-void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh,
-                    std::vector<double>& nodeSizes) {
+void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh) {
   if (isPeriodicSurface(surface)) return;  // the image of its master: copyPeriodicSurfaces
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
   const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
   if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
-    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh, nodeSizes);
+    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh);
     return;
   }
-  meshSurface(model, surface, stage.rules, options.smoothing, mesh, nodeSizes, &stage.fields,
+  meshSurface(model, surface, stage.rules, options.smoothing, mesh, &stage.fields,
               surfaceAlgorithm(stage, surface));
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
@@ -173,7 +143,7 @@ bool wantsAllQuadrangles(const Model& model, const MeshOptions& options) {
   return options.recombineAll || !model.meshConstraints().recombinedSurfaces.empty();
 }
 
-void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& nodeSizes) {
+void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   MessageSink& log = stage.log;
@@ -181,17 +151,18 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh, std::vector<double>& no
   const bool anyByOption =
       std::any_of(model.surfaces().begin(), model.surfaces().end(),
                   [&](const auto& entry) { return !chosen.contains(entry.first); });
-  if (!isAvailable(options.algorithm2D) && anyByOption)
-    log.warning("Mesh.Algorithm " + whyUnavailable(options.algorithm2D) +
-                ": surfaces are meshed with Frontal-Delaunay (6)");
+  const std::string why = whyUnavailable(options.algorithm2D);
+  if (!why.empty() && anyByOption)
+    log.warning("Mesh.Algorithm " + why + ": surfaces are meshed with " +
+                fallbackText(options.algorithm2D));
   if (options.subdivisionAlgorithm == 2 || options.subdivisionAlgorithm == 3)
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");
   const ExtrusionMesher extruded(model);
   for (const auto& [tag, surface] : model.surfaces())
-    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh, nodeSizes);
-  extruded.meshSurfaces(mesh, nodeSizes);
-  copyPeriodicSurfaces(model, mesh, nodeSizes);
+    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh);
+  extruded.meshSurfaces(mesh);
+  copyPeriodicSurfaces(model, mesh);
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
@@ -222,23 +193,22 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   // Full-quad recombination of every surface meshes twice as coarse, then splits each
   // element into quadrangles, which halves the sizes back.
   if (options.recombineAll && isFullQuad(options) && dim >= 2) rules.factor *= 2;
-  std::vector<double> nodeSizes;  // target size at each node, read by the next dimension
   const SizeFields fields(model, log);
-  meshPoints(model, rules, fields, mesh, nodeSizes);
+  meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
     const StageTimer timer(1);
     const std::map<int, Periodicity> periodic = periodicCurves(model);
     const ExtrusionMesher extruded(model);
     for (const auto& [tag, curve] : model.curves())
       if (!periodic.contains(tag) && !extruded.meshesCurve(tag))
-        meshCurve(model, curve, rules, mesh, nodeSizes, &fields);
-    extruded.meshCurves(mesh, nodeSizes);
-    copyPeriodicCurves(model, periodic, mesh, nodeSizes);
+        meshCurve(model, curve, rules, mesh, &fields);
+    extruded.meshCurves(mesh);
+    copyPeriodicCurves(model, periodic, mesh);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {
     const StageTimer timer(2);
-    meshSurfaces({model, options, rules, fields, dim, log}, mesh, nodeSizes);
+    meshSurfaces({model, options, rules, fields, dim, log}, mesh);
     if (wantsAllQuadrangles(model, options)) {
       if (dim == 2)
         subdivideIntoQuadrangles(model, mesh);
@@ -250,8 +220,17 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   if (dim >= 3) {
     const StageTimer timer(3);
     const ExtrusionMesher extruded(model);
-    for (const auto& [tag, volume] : model.volumes())
-      if (!extruded.meshesVolume(tag)) meshVolume(model, options, tag, mesh);
+    const VolumeAlgorithm& volume = volumeAlgorithmFor(options.algorithm3D);
+    const std::string why = volumeAlgorithmUnavailable(options.algorithm3D);
+    bool warned = why.empty();
+    for (const auto& entry : model.volumes()) {
+      if (extruded.meshesVolume(entry.first)) continue;
+      if (!warned)
+        log.warning("Mesh.Algorithm3D " + why + ": volumes are meshed with " + volume.title +
+                    " (" + std::to_string(volume.code) + ")");
+      warned = true;
+      volume.mesh(model, options, entry.first, mesh);
+    }
     extruded.meshVolumes(mesh);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
   }

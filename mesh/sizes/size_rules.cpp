@@ -4,10 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include "kernel/geo/circle_arc_geometry.h"
-#include "kernel/geo/ellipse_arc_geometry.h"
-#include "kernel/geo/line_geometry.h"
-#include "kernel/geo/spline_geometry.h"
 
 namespace geomesh {
 namespace {
@@ -48,24 +44,20 @@ bool isStraight(const CurveGeometry& g) {
 // The three kinds of curves the minimum segment counts tell apart, as Gmsh names them.
 enum class CurveShape { Line, Arc, Other };
 
-// Curves of the built-in kernel say what they are; a spline stays a spline even when straight.
-// Other curves are recognised by their shape.
+// Curves say what they are; a spline stays a spline even when straight. Curves of no known
+// kind are recognised by their shape.
 CurveShape shapeOf(const CurveGeometry& g) {
-  if (dynamic_cast<const LineGeometry*>(&g)) return CurveShape::Line;
-  if (dynamic_cast<const CircleArcGeometry*>(&g) || dynamic_cast<const EllipseArcGeometry*>(&g))
-    return CurveShape::Arc;
-  if (dynamic_cast<const BSplineGeometry*>(&g) || dynamic_cast<const CatmullRomGeometry*>(&g))
-    return CurveShape::Other;
+  switch (g.kind()) {
+    case CurveKind::Line: return CurveShape::Line;
+    case CurveKind::CircleArc:
+    case CurveKind::EllipseArc: return CurveShape::Arc;
+    case CurveKind::Spline:
+    case CurveKind::BSpline:
+    case CurveKind::Bezier: return CurveShape::Other;
+    case CurveKind::Other: break;
+  }
   if (isAngleParametrizedConic(g)) return CurveShape::Arc;
   return isStraight(g) ? CurveShape::Line : CurveShape::Other;
-}
-
-// The angle an arc of circle or ellipse spans (its parametric angle for an ellipse).
-double arcAngle(const CurveGeometry& g) {
-  if (const auto* circle = dynamic_cast<const CircleArcGeometry*>(&g)) return circle->angle();
-  if (const auto* ellipse = dynamic_cast<const EllipseArcGeometry*>(&g))
-    return std::abs(ellipse->sweep());
-  return g.range().max - g.range().min;
 }
 
 }  // namespace
@@ -135,7 +127,7 @@ int SizeRules::minimumSegments(const CurveGeometry& g) const {
     case CurveShape::Line: return 1;
     case CurveShape::Arc: {
       // Up to 1% of a segment above a whole number is forgiven, as for sizes.
-      const double n = std::floor(minCircleNodes * arcAngle(g) / (2 * kPi) + 0.99);
+      const double n = std::floor(minCircleNodes * g.arcAngle() / (2 * kPi) + 0.99);
       return std::max(static_cast<int>(n), 1);
     }
     case CurveShape::Other: break;

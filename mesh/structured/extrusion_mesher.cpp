@@ -212,7 +212,7 @@ struct Sweep {
   Mesh& mesh;
 };
 
-void meshSweptCurve(const Sweep& s, const ModelCurve& curve, std::vector<double>& nodeSizes) {
+void meshSweptCurve(const Sweep& s, const ModelCurve& curve) {
   const EntityId id{1, curve.tag};
   const ExtrusionRecord& record = *curve.extrusion;
   const ModelPoint* source = s.model.point(record.source);
@@ -228,7 +228,7 @@ void meshSweptCurve(const Sweep& s, const ModelCurve& curve, std::vector<double>
   for (std::size_t k = 1; k + 1 < f.size(); ++k) {
     const Vec3 p = record.motion->apply(source->xyz, f[k]);
     chain.push_back(s.mesh.addNode(p));
-    nodeSizes.push_back(nodeSizes[sourceNode]);
+    s.mesh.setNodeSize(chain.back(), s.mesh.nodeSize(sourceNode));
     const double along = fromStart ? f[k] : 1 - f[k];
     if (curve.geometry)
       parameters.push_back(
@@ -248,8 +248,7 @@ void meshSweptCurve(const Sweep& s, const ModelCurve& curve, std::vector<double>
 
 // The top curve's mesh is the image of its source's: same number of segments, end points
 // matched by position, the order reversed when the copy runs the other way.
-void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord& record,
-                    std::vector<double>& nodeSizes) {
+void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord& record) {
   const EntityId id{1, top.tag};
   const std::vector<NodeIndex> chain = curveNodeChain(s.model, s.mesh, record.source);
   NodeLocator ends(s.mesh, s.tolerance);
@@ -261,7 +260,7 @@ void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord
     const Vec3 p = record.motion->apply(s.mesh.node(chain[i]), 1);
     if (i > 0 && i + 1 < chain.size()) {
       image.push_back(s.mesh.addNode(p));
-      nodeSizes.push_back(nodeSizes[chain[i]]);
+      s.mesh.setNodeSize(image.back(), s.mesh.nodeSize(chain[i]));
       continue;
     }
     const std::optional<NodeIndex> end = ends.find(p);
@@ -289,8 +288,7 @@ void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord
 
 // The source curve's nodes swept layer by layer; the sweeps of its ends and its last row are
 // the boundary's nodes (found by position), the others new nodes of the surface.
-void meshSweptSurface(const Sweep& s, const ModelSurface& surface,
-                      std::vector<double>& nodeSizes) {
+void meshSweptSurface(const Sweep& s, const ModelSurface& surface) {
   const EntityId id{2, surface.tag};
   const ExtrusionRecord& record = *surface.extrusion;
   const std::vector<double> f = layerFractions(record.layers, id);
@@ -310,7 +308,7 @@ void meshSweptSurface(const Sweep& s, const ModelSurface& surface,
         grid[k * n + i] = *found;
       } else if (k < layers && i > 0 && i + 1 < n) {
         grid[k * n + i] = s.mesh.addNode(p);
-        nodeSizes.push_back(nodeSizes[chain[i]]);
+        s.mesh.setNodeSize(grid[k * n + i], s.mesh.nodeSize(chain[i]));
         addSurfaceNode(s.mesh, surface, em, grid[k * n + i]);
       } else {
         throw MeshError(id, "the sweep of " + nodeText(chain[i]) +
@@ -329,8 +327,7 @@ void meshSweptSurface(const Sweep& s, const ModelSurface& surface,
 
 // The top surface's mesh is the image of its source's: same connectivity, the source's
 // interior nodes moved, its boundary nodes matched with the top's boundary by position.
-void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRecord& record,
-                      std::vector<double>& nodeSizes) {
+void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRecord& record) {
   const EntityId id{2, top.tag};
   const EntityMesh* source = s.mesh.find({2, record.source});
   if (!source || source->elementCount() == 0)
@@ -350,7 +347,7 @@ void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRe
         const Vec3 p = record.motion->apply(s.mesh.node(n), 1);
         if (inside.contains(n)) {
           it->second = s.mesh.addNode(p);
-          nodeSizes.push_back(nodeSizes[n]);
+          s.mesh.setNodeSize(it->second, s.mesh.nodeSize(n));
           newNodes.push_back(it->second);
         } else if (const std::optional<NodeIndex> found = boundary.find(p)) {
           it->second = *found;
@@ -589,27 +586,27 @@ bool ExtrusionMesher::meshesVolume(int tag) const {
   return volume && hasLayers(volume->extrusion);
 }
 
-void ExtrusionMesher::meshCurves(Mesh& mesh, std::vector<double>& nodeSizes) const {
+void ExtrusionMesher::meshCurves(Mesh& mesh) const {
   const Sweep s{model_, tolerance_, mesh};
   for (const auto& [tag, curve] : model_.curves())
     if (hasLayers(curve.extrusion) && !topCurves_.contains(tag))
-      meshSweptCurve(s, curve, nodeSizes);
+      meshSweptCurve(s, curve);
   meshImages(
       topCurves_, 1, [&](int source) { return isMeshed(mesh, {1, source}); },
       [&](int tag, const ExtrusionRecord& record) {
-        meshImageCurve(s, *model_.curve(tag), record, nodeSizes);
+        meshImageCurve(s, *model_.curve(tag), record);
       });
 }
 
-void ExtrusionMesher::meshSurfaces(Mesh& mesh, std::vector<double>& nodeSizes) const {
+void ExtrusionMesher::meshSurfaces(Mesh& mesh) const {
   const Sweep s{model_, tolerance_, mesh};
   for (const auto& [tag, surface] : model_.surfaces())
     if (hasLayers(surface.extrusion) && !topSurfaces_.contains(tag))
-      meshSweptSurface(s, surface, nodeSizes);
+      meshSweptSurface(s, surface);
   meshImages(
       topSurfaces_, 2, [&](int source) { return isMeshed(mesh, {2, source}); },
       [&](int tag, const ExtrusionRecord& record) {
-        meshImageSurface(s, *model_.surface(tag), record, nodeSizes);
+        meshImageSurface(s, *model_.surface(tag), record);
       });
 }
 

@@ -27,10 +27,10 @@ class ExtrusionMesher {
   bool meshesSurface(int tag) const;
   bool meshesVolume(int tag) const;
 
-  // Run after the other entities of the dimension are meshed; nodeSizes (indexed by node)
-  // receives a size for each new node, taken from the source node it comes from.
-  void meshCurves(Mesh& mesh, std::vector<double>& nodeSizes) const;
-  void meshSurfaces(Mesh& mesh, std::vector<double>& nodeSizes) const;
+  // Run after the other entities of the dimension are meshed; each new node gets the target
+  // size of the source node it comes from (Mesh::setNodeSize).
+  void meshCurves(Mesh& mesh) const;
+  void meshSurfaces(Mesh& mesh) const;
   void meshVolumes(Mesh& mesh) const;
 
  private:

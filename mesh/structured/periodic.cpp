@@ -90,8 +90,7 @@ bool imageIsReversed(const Model& model, const ModelCurve& slave, const ModelCur
                                       " onto its own");
 }
 
-void copyCurve(const Model& model, const ModelCurve& slave, const Periodicity& link, Mesh& mesh,
-               std::vector<double>& nodeSizes) {
+void copyCurve(const Model& model, const ModelCurve& slave, const Periodicity& link, Mesh& mesh) {
   const EntityId id{1, slave.tag};
   const ModelCurve* master = model.curve(link.master);
   if (!master || !master->geometry || !slave.geometry)
@@ -126,8 +125,7 @@ void copyCurve(const Model& model, const ModelCurve& slave, const Periodicity& l
     if (distance(onCurve, image) > tol)
       throw MeshError(id, "it is not the image of its periodic master " + curveName(master->tag));
     const NodeIndex node = mesh.addNode(onCurve);
-    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
-    nodeSizes[node] = from < nodeSizes.size() ? nodeSizes[from] : 0;
+    mesh.setNodeSize(node, mesh.nodeSize(from));
     em.nodes.push_back(node);
     em.parametric.push_back(t);
     chain.push_back(node);
@@ -260,8 +258,7 @@ void orientAlongNormal(const SurfaceGeometry& g, const Mesh& mesh, EntityMesh& e
   }
 }
 
-void copySurface(const Model& model, const ModelSurface& slave, Mesh& mesh,
-                 std::vector<double>& nodeSizes) {
+void copySurface(const Model& model, const ModelSurface& slave, Mesh& mesh) {
   const EntityId id{2, slave.tag};
   const Periodicity& link = *slave.periodic;
   const EntityMesh* masterMesh = mesh.find({2, link.master});
@@ -300,8 +297,7 @@ void copySurface(const Model& model, const ModelSurface& slave, Mesh& mesh,
           throw MeshError(id, "it is not the image of its periodic master " +
                                   surfaceName(link.master));
         it->second = mesh.addNode(q);
-        if (nodeSizes.size() <= it->second) nodeSizes.resize(it->second + 1, 0);
-        nodeSizes[it->second] = n < nodeSizes.size() ? nodeSizes[n] : 0;
+        mesh.setNodeSize(it->second, mesh.nodeSize(n));
         em.nodes.push_back(it->second);
         out.nodes.push_back({it->second, n});
       }
@@ -342,24 +338,24 @@ std::map<int, Periodicity> periodicCurves(const Model& model) {
   return links;
 }
 
-void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links, Mesh& mesh,
-                        std::vector<double>& nodeSizes) {
+void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links,
+                        Mesh& mesh) {
   std::map<int, int> masterOf;
   for (const auto& entry : links) masterOf[entry.first] = entry.second.master;
   inDependencyOrder(1, masterOf, [&](int tag) {
-    copyCurve(model, *model.curve(tag), links.at(tag), mesh, nodeSizes);
+    copyCurve(model, *model.curve(tag), links.at(tag), mesh);
   });
   linkEndPoints(model, links, mesh);
 }
 
 bool isPeriodicSurface(const ModelSurface& surface) { return surface.periodic.has_value(); }
 
-void copyPeriodicSurfaces(const Model& model, Mesh& mesh, std::vector<double>& nodeSizes) {
+void copyPeriodicSurfaces(const Model& model, Mesh& mesh) {
   std::map<int, int> masterOf;
   for (const auto& [tag, surface] : model.surfaces())
     if (surface.periodic) masterOf[tag] = surface.periodic->master;
   inDependencyOrder(2, masterOf, [&](int tag) {
-    copySurface(model, *model.surface(tag), mesh, nodeSizes);
+    copySurface(model, *model.surface(tag), mesh);
   });
 }
 

@@ -24,10 +24,11 @@ std::map<int, Periodicity> periodicCurves(const Model& model);
 // Meshes each curve of `links` as the image of its master's mesh (a master that is itself
 // periodic first), then links the end points of those curves to their masters' (the first
 // curve, by tag, decides for a point shared by several). Each new node is put on the slave's
-// geometry, with its parameter. Throws MeshError naming the curve when its end points are not
-// the images of its master's, or when its geometry is not the image of the master's.
-void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links, Mesh& mesh,
-                        std::vector<double>& nodeSizes);
+// geometry, with its parameter and its master node's target size. Throws MeshError naming the
+// curve when its end points are not the images of its master's, or when its geometry is not
+// the image of the master's.
+void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links,
+                        Mesh& mesh);
 
 // Whether the surface is meshed as the image of another (by copyPeriodicSurfaces).
 bool isPeriodicSurface(const ModelSurface& surface);
@@ -36,6 +37,6 @@ bool isPeriodicSurface(const ModelSurface& surface);
 // of the master's boundary nodes are the slave's curve nodes, the others are new nodes put on
 // the slave's geometry; elements are oriented along the slave's normal. Throws MeshError naming
 // the surface when its boundary nodes are not the images of the master's.
-void copyPeriodicSurfaces(const Model& model, Mesh& mesh, std::vector<double>& nodeSizes);
+void copyPeriodicSurfaces(const Model& model, Mesh& mesh);
 
 }  // namespace geomesh

@@ -141,8 +141,7 @@ void interpolate(Grid& g, const SurfaceGeometry& geometry, const Mesh& mesh) {
     }
 }
 
-void addInteriorNodes(Grid& g, const SurfaceGeometry& geometry, EntityMesh& em, Mesh& mesh,
-                      std::vector<double>& nodeSizes) {
+void addInteriorNodes(Grid& g, const SurfaceGeometry& geometry, EntityMesh& em, Mesh& mesh) {
   for (int j = 1; j + 1 < g.nj; ++j)
     for (int i = 1; i + 1 < g.ni; ++i) {
       const Vec2 uv = g.uvAt(i, j);
@@ -158,9 +157,7 @@ void addInteriorNodes(Grid& g, const SurfaceGeometry& geometry, EntityMesh& em, 
                                distance(x, mesh.node(g.at(i + 1, j))) +
                                distance(x, mesh.node(g.at(i, j - 1))) +
                                distance(x, mesh.node(g.at(i, j + 1))));
-      const NodeIndex n = g.at(i, j);
-      if (nodeSizes.size() <= n) nodeSizes.resize(n + 1, 0);
-      nodeSizes[n] = h;
+      mesh.setNodeSize(g.at(i, j), h);
     }
 }
 
@@ -223,8 +220,7 @@ void reverseElements(EntityMesh& em) {
 }  // namespace
 
 void meshTransfiniteSurface(const Model& model, const ModelSurface& surface,
-                            const TransfiniteSurface& constraint, bool recombine, Mesh& mesh,
-                            std::vector<double>& nodeSizes) {
+                            const TransfiniteSurface& constraint, bool recombine, Mesh& mesh) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -236,7 +232,7 @@ void meshTransfiniteSurface(const Model& model, const ModelSurface& surface,
   em.nodes.clear();
   em.parametric.clear();
   em.blocks.clear();
-  addInteriorNodes(grid, *surface.geometry, em, mesh, nodeSizes);
+  addInteriorNodes(grid, *surface.geometry, em, mesh);
   addElements(grid, constraint, recombine, em);
   if (gridOrientation(grid) < 0) reverseElements(em);
 }

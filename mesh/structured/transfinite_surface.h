@@ -16,7 +16,6 @@ namespace geomesh {
 // are counter-clockwise in the surface's parametrization. Throws MeshError naming the surface
 // when its boundary does not fit.
 void meshTransfiniteSurface(const Model& model, const ModelSurface& surface,
-                            const TransfiniteSurface& constraint, bool recombine, Mesh& mesh,
-                            std::vector<double>& nodeSizes);
+                            const TransfiniteSurface& constraint, bool recombine, Mesh& mesh);
 
 }  // namespace geomesh

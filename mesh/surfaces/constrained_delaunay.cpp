@@ -12,12 +12,8 @@ namespace {
 
 using Edge = std::pair<std::uint32_t, std::uint32_t>;
 
-std::uint32_t nextCorner(std::uint32_t c) {
-  return c - c % 3 + (c % 3 + 1) % 3;
-}
-std::uint32_t prevCorner(std::uint32_t c) {
-  return c - c % 3 + (c % 3 + 2) % 3;
-}
+constexpr auto nextCorner = Triangulation2D::nextCorner;
+constexpr auto prevCorner = Triangulation2D::prevCorner;
 
 bool pointsAhead(Vec2 a, Vec2 b, Vec2 p) {
   return (b.u - a.u) * (p.u - a.u) + (b.v - a.v) * (p.v - a.v) > 0;

@@ -21,6 +21,9 @@ constexpr double kSqrt3 = 1.7320508075688772;
 constexpr double kSqrt2 = 1.4142135623730951;
 constexpr double kPi = 3.14159265358979323846;
 
+constexpr auto nextCorner = Triangulation2D::nextCorner;
+constexpr auto prevCorner = Triangulation2D::prevCorner;
+
 enum class State : std::uint8_t { Outside, Waiting, Active, Accepted };
 // Where new points go: in front of the front (frontal-Delaunay), at the circumcentre of the
 // worst triangle (Delaunay refinement), wherever it is, or in front of the front at the
@@ -54,14 +57,13 @@ Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
 class FrontalRefiner {
  public:
   FrontalRefiner(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                 std::vector<double>& sizes, const SurfaceMetric* metric,
-                 const WorkPlaneSize* field, Placement placement)
-      : tri_(tri), inside_(inside), sizes_(sizes), metric_(metric), field_(field),
+                 const SurfaceMetric* metric, const WorkPlaneSize* field, Placement placement)
+      : tri_(tri), inside_(inside), metric_(metric), field_(field),
         placement_(placement),
         idealRadius_(placement == Placement::FrontalQuads ? 1 / kSqrt2 : 1 / kSqrt3) {}
 
   void run() {
-    const std::uint32_t firstNew = static_cast<std::uint32_t>(sizes_.size());
+    const std::uint32_t firstNew = static_cast<std::uint32_t>(tri_.pointCount());
     const std::uint32_t n = static_cast<std::uint32_t>(tri_.triangleCount());
     state_.assign(n, State::Outside);
     stamp_.assign(n, 0);
@@ -77,15 +79,15 @@ class FrontalRefiner {
       if (!advanceFront(e.triangle)) state_[e.triangle] = State::Accepted;
     }
     if (field_)
-      for (std::uint32_t v = firstNew; v < sizes_.size(); ++v)
-        sizes_[v] = std::min(sizes_[v], (*field_)(tri_.point(v)));
+      for (std::uint32_t v = firstNew; v < tri_.pointCount(); ++v)
+        tri_.setSize(v, std::min(tri_.size(v), (*field_)(tri_.point(v))));
   }
 
  private:
   Vec2 p(std::uint32_t t, int i) const { return tri_.point(tri_.vertex(3 * t + i)); }
   double targetSize(std::uint32_t t) const {
-    const double mean = (sizes_[tri_.vertex(3 * t)] + sizes_[tri_.vertex(3 * t + 1)] +
-                         sizes_[tri_.vertex(3 * t + 2)]) /
+    const double mean = (tri_.size(tri_.vertex(3 * t)) + tri_.size(tri_.vertex(3 * t + 1)) +
+                         tri_.size(tri_.vertex(3 * t + 2))) /
                         3;
     return field_ ? std::min(mean, (*field_)(centroid(t))) : mean;
   }
@@ -134,7 +136,8 @@ class FrontalRefiner {
     double bestLength = 0;
     for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
       if (!isFrontEdge(c)) continue;
-      const double l = length(sub(p(t, (c + 2) % 3), p(t, (c + 1) % 3)));
+      const double l = length(sub(tri_.point(tri_.vertex(prevCorner(c))),
+                                  tri_.point(tri_.vertex(nextCorner(c)))));
       if (best == kNone || l < bestLength) best = c, bestLength = l;
     }
     return best;
@@ -143,8 +146,8 @@ class FrontalRefiner {
   // Where to put the new point in front of the edge of `corner` (Rebay's placement), in the
   // metric of the edge's midpoint.
   Vec2 frontPoint(std::uint32_t t, std::uint32_t corner) const {
-    const std::uint32_t va = tri_.vertex(3 * t + (corner + 1) % 3);
-    const std::uint32_t vb = tri_.vertex(3 * t + (corner + 2) % 3);
+    const std::uint32_t va = tri_.vertex(nextCorner(corner));
+    const std::uint32_t vb = tri_.vertex(prevCorner(corner));
     const MetricFrame f = frameAt(
         {0.5 * (tri_.point(va).u + tri_.point(vb).u), 0.5 * (tri_.point(va).v + tri_.point(vb).v)});
     const Vec2 a = f.apply(tri_.point(va)), b = f.apply(tri_.point(vb));
@@ -154,7 +157,7 @@ class FrontalRefiner {
     const Vec2 inward{-ab.v / (2 * half), ab.u / (2 * half)};
     const Vec2 center = circumcenter(f.apply(p(t, 0)), f.apply(p(t, 1)), f.apply(p(t, 2)));
     const double q = std::max(length(sub(center, mid)), 1e-300);
-    double target = 0.5 * (sizes_[va] + sizes_[vb]);
+    double target = 0.5 * (tri_.size(va) + tri_.size(vb));
     if (field_)
       target = std::min(target, (*field_)({0.5 * (tri_.point(va).u + tri_.point(vb).u),
                                            0.5 * (tri_.point(va).v + tri_.point(vb).v)}));
@@ -175,21 +178,21 @@ class FrontalRefiner {
   // Size at x interpolated linearly in triangle t.
   double interpolatedSize(std::uint32_t t, Vec2 x) const {
     const std::array<double, 3> w = weights(t, x);
-    return w[0] * sizes_[tri_.vertex(3 * t)] + w[1] * sizes_[tri_.vertex(3 * t + 1)] +
-           w[2] * sizes_[tri_.vertex(3 * t + 2)];
+    return w[0] * tri_.size(tri_.vertex(3 * t)) + w[1] * tri_.size(tri_.vertex(3 * t + 1)) +
+           w[2] * tri_.size(tri_.vertex(3 * t + 2));
   }
 
   // The cross field of quadrangle meshing: at each vertex, (cos 4a, sin 4a) for the angle a
   // of the square cells wanted there, summed over the constrained edges at boundary
   // vertices (a cross is the same turned by a quarter turn) and interpolated inside.
   void initCrossField() {
-    cross_.assign(sizes_.size(), {0, 0});
+    cross_.assign(tri_.pointCount(), {0, 0});
     for (std::uint32_t t = 0; t < tri_.triangleCount(); ++t) {
       if (!inside_[t]) continue;
       for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
         if (tri_.kind(c) == EdgeKind::Free) continue;
-        const std::uint32_t va = tri_.vertex(3 * t + (c + 1) % 3);
-        const std::uint32_t vb = tri_.vertex(3 * t + (c + 2) % 3);
+        const std::uint32_t va = tri_.vertex(nextCorner(c));
+        const std::uint32_t vb = tri_.vertex(prevCorner(c));
         const Vec2 pa = tri_.point(va), pb = tri_.point(vb);
         const Vec2 d = frameAt({0.5 * (pa.u + pb.u), 0.5 * (pa.v + pb.v)}).apply(sub(pb, pa));
         const double angle = 4 * std::atan2(d.v, d.u);
@@ -214,8 +217,8 @@ class FrontalRefiner {
   // nearest the target size (an axis edge gets a right angle at its end, a diagonal one its
   // opposite corner). Rebay's point when that one would not replace t.
   Vec2 quadPoint(std::uint32_t t, std::uint32_t corner) const {
-    const std::uint32_t va = tri_.vertex(3 * t + (corner + 1) % 3);
-    const std::uint32_t vb = tri_.vertex(3 * t + (corner + 2) % 3);
+    const std::uint32_t va = tri_.vertex(nextCorner(corner));
+    const std::uint32_t vb = tri_.vertex(prevCorner(corner));
     const Vec2 middle{0.5 * (tri_.point(va).u + tri_.point(vb).u),
                       0.5 * (tri_.point(va).v + tri_.point(vb).v)};
     const MetricFrame f = frameAt(middle);
@@ -225,7 +228,7 @@ class FrontalRefiner {
     const Vec2 cross{cross_[va].u + cross_[vb].u, cross_[va].v + cross_[vb].v};
     const double angle = cross.u == 0 && cross.v == 0 ? std::atan2(ab.v, ab.u)
                                                       : std::atan2(cross.v, cross.u) / 4;
-    double target = 0.5 * (sizes_[va] + sizes_[vb]);
+    double target = 0.5 * (tri_.size(va) + tri_.size(vb));
     if (field_) target = std::min(target, (*field_)(middle));
     const auto maxNorm = [angle](Vec2 d) {
       const double c = std::cos(angle), s = std::sin(angle);
@@ -298,8 +301,8 @@ class FrontalRefiner {
       found = tri_.locate(x, t);
     }
     if (found == kNone || !inside_[found]) return false;
-    // sizes_ keeps the sizes extended from the boundary, so that a field's small sizes do
-    // not spread by interpolation; the field applies where a size is used.
+    // The triangulation keeps the sizes extended from the boundary, so that a field's small
+    // sizes do not spread by interpolation; the field applies where a size is used.
     const double extended = interpolatedSize(found, x);
     const double size = field_ ? std::min(extended, (*field_)(x)) : extended;
     if (!(size > 0)) return false;
@@ -308,7 +311,7 @@ class FrontalRefiner {
       tri_.removeLastPoint();
       return false;
     }
-    sizes_.push_back(extended);
+    tri_.setSize(v, extended);
     if (placement_ == Placement::FrontalQuads) cross_.push_back(interpolatedCross(found, x));
     tri_.commitCavity(v);
     updateAfterInsertion();
@@ -333,7 +336,6 @@ class FrontalRefiner {
 
   Triangulation2D& tri_;
   std::vector<std::uint8_t>& inside_;
-  std::vector<double>& sizes_;
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
   Placement placement_;
@@ -347,21 +349,21 @@ class FrontalRefiner {
 }  // namespace
 
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                   std::vector<double>& sizes, const SurfaceMetric* metric,
+                   const SurfaceMetric* metric,
                    const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, sizes, metric, field, Placement::Frontal).run();
+  FrontalRefiner(tri, inside, metric, field, Placement::Frontal).run();
 }
 
 void refineFrontalQuads(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                        std::vector<double>& sizes, const SurfaceMetric* metric,
+                        const SurfaceMetric* metric,
                         const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, sizes, metric, field, Placement::FrontalQuads).run();
+  FrontalRefiner(tri, inside, metric, field, Placement::FrontalQuads).run();
 }
 
 void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                    std::vector<double>& sizes, const SurfaceMetric* metric,
+                    const SurfaceMetric* metric,
                     const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, sizes, metric, field, Placement::Circumcenter).run();
+  FrontalRefiner(tri, inside, metric, field, Placement::Circumcenter).run();
 }
 
 }  // namespace geomesh

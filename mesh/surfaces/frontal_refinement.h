@@ -17,15 +17,16 @@ using WorkPlaneSize = std::function<double(Vec2)>;
 // on the perpendicular bisector of their front edge, placed to make a near-equilateral
 // triangle of the target size, and inserted by Bowyer-Watson. Larger triangles go first.
 //
-// `inside` flags the triangles of the domain (classifyInside), `sizes` holds the target size
-// at each vertex; both grow with the triangulation. New points get the size interpolated
-// linearly from the triangle they fall in, so sizes extend from the boundary inwards.
+// `inside` flags the triangles of the domain (classifyInside) and grows with the
+// triangulation, which holds the target size at each vertex (Triangulation2D::size). New
+// points get the size interpolated linearly from the triangle they fall in, so sizes extend
+// from the boundary inwards.
 // With a metric (curved surfaces), lengths, circumradii and point placement are measured on
 // the surface rather than in the work plane.
 // With `field` (a background size field, given at work-plane points), the target size at a
 // point is the smaller of the interpolated one and the field's.
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                   std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
+                   const SurfaceMetric* metric = nullptr,
                    const WorkPlaneSize* field = nullptr);
 
 // Frontal-Delaunay for quadrangles (Mesh.Algorithm 8): the same front, but the ideal
@@ -33,14 +34,14 @@ void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
 // field taken from the directions of the constrained edges, so that pairs of triangles
 // make square cells for recombination.
 void refineFrontalQuads(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                        std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
+                        const SurfaceMetric* metric = nullptr,
                         const WorkPlaneSize* field = nullptr);
 
 // Delaunay refinement (Mesh.Algorithm 5): the same acceptance test, but every bad triangle
 // is refined, worst first, by inserting its circumcentre (in the surface's metric), or its
 // centroid when the circumcentre lies outside the domain.
 void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                    std::vector<double>& sizes, const SurfaceMetric* metric = nullptr,
+                    const SurfaceMetric* metric = nullptr,
                     const WorkPlaneSize* field = nullptr);
 
 }  // namespace geomesh

@@ -5,7 +5,6 @@
 #include <tuple>
 #include <utility>
 
-#include "mesh/surfaces/modifiable_triangulation.h"
 #include "mesh/core/predicates.h"
 
 namespace geomesh {
@@ -23,8 +22,8 @@ constexpr double kCollapseQuality = 0.2;
 // A vertex that smoothing moves by less than this fraction of the target size has settled.
 constexpr double kSettled = 0.02;
 
-constexpr auto nextCorner = ModifiableTriangulation::nextCorner;
-constexpr auto prevCorner = ModifiableTriangulation::prevCorner;
+constexpr auto nextCorner = Triangulation2D::nextCorner;
+constexpr auto prevCorner = Triangulation2D::prevCorner;
 
 Vec2 sub(Vec2 a, Vec2 b) {
   return {a.u - b.u, a.v - b.v};
@@ -55,9 +54,8 @@ double gamma(Vec2 a, Vec2 b, Vec2 c) {
 // constrained triangulation, as a background mesh.
 class BoundarySizes {
  public:
-  BoundarySizes(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-                const std::vector<double>& sizes)
-      : tri_(tri), inside_(inside), sizes_(sizes) {}
+  BoundarySizes(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside)
+      : tri_(tri), inside_(inside) {}
 
   // The size at x; `hint` is a domain triangle to start the search from, and becomes the
   // one x lies in.
@@ -74,14 +72,20 @@ class BoundarySizes {
     // Rounding may put x a hair outside: clamp to the triangle.
     l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
     const double sum = l0 + l1 + l2;
-    return (l0 * sizes_[v[0]] + l1 * sizes_[v[1]] + l2 * sizes_[v[2]]) / sum;
+    return (l0 * tri_.size(v[0]) + l1 * tri_.size(v[1]) + l2 * tri_.size(v[2])) / sum;
   }
 
  private:
   Triangulation2D tri_;  // a copy: locate() draws its own random numbers
   const std::vector<std::uint8_t>& inside_;
-  const std::vector<double>& sizes_;
 };
+
+// The domain's part of a triangulation: its boundary edges on the hull.
+Triangulation2D domainOf(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside) {
+  Triangulation2D domain = tri;
+  domain.keepTriangles(inside);
+  return domain;
+}
 
 struct Edge {
   double length;  // in target sizes
@@ -91,17 +95,19 @@ struct Edge {
 class MeshAdapter {
  public:
   MeshAdapter(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
-              const std::vector<double>& sizes, std::uint32_t firstMovable,
-              const SurfaceMetric* metric, const WorkPlaneSize* field)
-      : mesh_(boundary, inside), background_(boundary, inside, sizes), metric_(metric),
-        field_(field), firstMovable_(firstMovable), extended_(sizes),
-        target_(sizes.size()), hint_(sizes.size(), kNone), mark_(sizes.size(), 0),
-        touched_(sizes.size(), 0) {
+              std::uint32_t firstMovable, const SurfaceMetric* metric,
+              const WorkPlaneSize* field)
+      : mesh_(domainOf(boundary, inside)), background_(boundary, inside), metric_(metric),
+        field_(field), firstMovable_(firstMovable), target_(boundary.pointCount()),
+        hint_(boundary.pointCount(), kNone), mark_(boundary.pointCount(), 0),
+        touched_(boundary.pointCount(), 0) {
     for (std::uint32_t t = 0; t < boundary.triangleCount(); ++t)
       if (inside[t])
         for (int i = 0; i < 3; ++i) hint_[boundary.vertex(3 * t + i)] = t;
-    for (std::uint32_t v = 0; v < sizes.size(); ++v)
-      target_[v] = mesh_.inMesh(v) ? cappedByField(sizes[v], mesh_.point(v)) : sizes[v];
+    for (std::uint32_t v = 0; v < boundary.pointCount(); ++v) {
+      const double size = mesh_.size(v);
+      target_[v] = mesh_.inMesh(v) ? cappedByField(size, mesh_.point(v)) : size;
+    }
   }
 
   PlanarMesh run(int smoothingPasses);
@@ -142,12 +148,11 @@ class MeshAdapter {
   bool allPositiveAround(Vec2 p, const std::vector<std::uint32_t>& ring) const;
   PlanarMesh result() const;
 
-  ModifiableTriangulation mesh_;
+  Triangulation2D mesh_;  // the domain only; its sizes are those extended from the boundary
   BoundarySizes background_;
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
   std::uint32_t firstMovable_;
-  std::vector<double> extended_;     // per vertex: size extended from the boundary
   std::vector<double> target_;       // per vertex: the size asked for (field included)
   std::vector<std::uint32_t> hint_;  // per vertex: where its size was found in background_
   std::vector<std::uint32_t> mark_;  // per vertex: stamps of the link test
@@ -173,8 +178,8 @@ double MeshAdapter::quality(Vec2 a, Vec2 b, Vec2 c) const {
 
 void MeshAdapter::updateSize(std::uint32_t v) {
   const Vec2 x = mesh_.point(v);
-  extended_[v] = background_.at(x, hint_[v]);
-  target_[v] = cappedByField(extended_[v], x);
+  mesh_.setSize(v, background_.at(x, hint_[v]));
+  target_[v] = cappedByField(mesh_.size(v), x);
 }
 
 // A field's size where it asks for one (a size that is not positive asks for nothing).
@@ -226,7 +231,7 @@ MeshAdapter::Range MeshAdapter::range() const {
 
 void MeshAdapter::splitLongEdges() {
   for (const Edge& e : edgesOutside(true)) {
-    const std::uint32_t c = mesh_.findEdge(e.a, e.b);
+    const std::uint32_t c = mesh_.findUndirectedEdge(e.a, e.b);
     if (c != kNone && mesh_.kind(c) == EdgeKind::Free) split(c);
   }
 }
@@ -241,7 +246,6 @@ void MeshAdapter::split(std::uint32_t c) {
       orient2d(py, m, pu) <= 0)
     return;
   const std::uint32_t v = mesh_.addPoint(m);
-  extended_.push_back(0);
   target_.push_back(0);
   hint_.push_back(hint_[u]);
   mark_.push_back(0);
@@ -253,7 +257,8 @@ void MeshAdapter::split(std::uint32_t c) {
 
 void MeshAdapter::collapseShortEdges() {
   for (const Edge& e : edgesOutside(false)) {
-    if (!mesh_.inMesh(e.a) || !mesh_.inMesh(e.b) || mesh_.findEdge(e.a, e.b) == kNone) continue;
+    if (!mesh_.inMesh(e.a) || !mesh_.inMesh(e.b) || mesh_.findUndirectedEdge(e.a, e.b) == kNone)
+      continue;
     if (!tryCollapse(e.a, e.b)) tryCollapse(e.b, e.a);
   }
 }
@@ -298,15 +303,11 @@ void MeshAdapter::swapEdges() {
       if (mesh_.neighbour(c) != kNone && mesh_.neighbour(c) > c) stack.push_back(c);
   }
   std::reverse(stack.begin(), stack.end());
-  while (!stack.empty()) {
-    const std::uint32_t c = stack.back();
-    stack.pop_back();
-    if (!swapImproves(c)) continue;
-    const std::uint32_t t1 = c / 3, t2 = mesh_.neighbour(c) / 3;
+  mesh_.flipWhile(std::move(stack), [this](std::uint32_t c) {
+    if (!swapImproves(c)) return false;
     touch(mesh_.vertex(c)), touch(mesh_.vertex(mesh_.neighbour(c)));
-    mesh_.flip(c);
-    stack.insert(stack.end(), {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2});
-  }
+    return true;
+  });
 }
 
 bool MeshAdapter::swapImproves(std::uint32_t c) const {
@@ -400,7 +401,7 @@ PlanarMesh MeshAdapter::result() const {
   PlanarMesh out;
   out.points.reserve(mesh_.pointCount());
   for (std::uint32_t v = 0; v < mesh_.pointCount(); ++v) out.points.push_back(mesh_.point(v));
-  out.sizes = extended_;
+  out.sizes.assign(mesh_.sizes().begin(), mesh_.sizes().end());
   for (std::uint32_t t = 0; t < mesh_.triangleCount(); ++t)
     if (mesh_.alive(t))
       for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) out.triangles.push_back(mesh_.vertex(c));
@@ -410,10 +411,9 @@ PlanarMesh MeshAdapter::result() const {
 }  // namespace
 
 PlanarMesh adaptMesh(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
-                     const std::vector<double>& sizes, std::uint32_t firstMovable,
-                     int smoothingPasses, const SurfaceMetric* metric,
-                     const WorkPlaneSize* field) {
-  return MeshAdapter(boundary, inside, sizes, firstMovable, metric, field).run(smoothingPasses);
+                     std::uint32_t firstMovable, int smoothingPasses,
+                     const SurfaceMetric* metric, const WorkPlaneSize* field) {
+  return MeshAdapter(boundary, inside, firstMovable, metric, field).run(smoothingPasses);
 }
 
 }  // namespace geomesh

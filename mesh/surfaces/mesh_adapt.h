@@ -5,35 +5,27 @@
 
 #include "mesh/surfaces/delaunay2d.h"
 #include "mesh/surfaces/frontal_refinement.h"
+#include "mesh/surfaces/planar_mesh.h"
 #include "mesh/surfaces/surface_metric.h"
 
 namespace geomesh {
 
-// A triangulated part of a work plane: triangle t has the counter-clockwise vertices
-// triangles[3t..3t+2], indices into `points`. Points no triangle uses are left over.
-struct PlanarMesh {
-  std::vector<Vec2> points;
-  std::vector<std::uint32_t> triangles;
-  std::vector<double> sizes;  // per point: the target size extended from the boundary
-};
-
 // MeshAdapt (Mesh.Algorithm 1): meshing by local modifications of the constrained Delaunay
 // triangulation of the boundary. Passes of edge splits (edges longer than 1.4 target sizes),
-// collapses (shorter than 0.7), quality-improving swaps and smoothing repeat until every free
-// edge is within range or, once no edge is more than twice too long, three passes in a row
-// fail to reduce the number of edges out of range (40 passes at most). Each pass costs
-// O(n log n) in the number of edges.
+// collapses (shorter than 0.7), quality-improving swaps and smoothing repeat until every free edge
+// is within range or, once no edge is more than twice too long, three passes in a row fail to
+// reduce the number of edges out of range (40 passes at most). Each pass costs O(n log n) in the
+// number of edges.
 //
-// `boundary` is the constrained triangulation with the triangles of the domain flagged in
-// `inside`; `sizes` holds the target size at its vertices. Vertices from `firstMovable` on
-// may move or disappear; the others (boundary and embedded nodes) and the non-free edges
-// stay as they are. Target sizes inside are interpolated linearly over the boundary
-// triangulation (extended from the boundary), capped by `field` when one is given. With a
-// metric, lengths and qualities are measured on the surface. `smoothingPasses` adds that
-// many final passes of smoothing and swaps.
+// `boundary` is the constrained triangulation with the triangles of the domain flagged in `inside`,
+// and the target size at its vertices (Triangulation2D::size). Vertices from `firstMovable` on may
+// move or disappear; the others (boundary and embedded nodes) and the non-free edges stay as they
+// are. Target sizes inside are interpolated linearly over the boundary triangulation (extended from
+// the boundary), capped by `field` when one is given. With a metric, lengths and qualities are
+// measured on the surface. `smoothingPasses` adds that many final passes of smoothing and swaps.
 PlanarMesh adaptMesh(const Triangulation2D& boundary, const std::vector<std::uint8_t>& inside,
-                     const std::vector<double>& sizes, std::uint32_t firstMovable,
-                     int smoothingPasses, const SurfaceMetric* metric = nullptr,
+                     std::uint32_t firstMovable, int smoothingPasses,
+                     const SurfaceMetric* metric = nullptr,
                      const WorkPlaneSize* field = nullptr);
 
 }  // namespace geomesh

@@ -105,8 +105,8 @@ bool shouldFlipInMetric(const Triangulation2D& tri, std::uint32_t corner,
   const std::uint32_t t = corner / 3;
   const Vec2 a = tri.point(tri.vertex(3 * t)), b = tri.point(tri.vertex(3 * t + 1)),
              c = tri.point(tri.vertex(3 * t + 2)), d = tri.point(tri.vertex(across));
-  const Vec2 u = tri.point(tri.vertex(t * 3 + (corner + 1) % 3));
-  const Vec2 w = tri.point(tri.vertex(t * 3 + (corner + 2) % 3));
+  const Vec2 u = tri.point(tri.vertex(Triangulation2D::nextCorner(corner)));
+  const Vec2 w = tri.point(tri.vertex(Triangulation2D::prevCorner(corner)));
   const MetricFrame f(metric.at({0.5 * (u.u + w.u), 0.5 * (u.v + w.v)}));
   // The flip must also keep both new triangles positive in the plane.
   const Vec2 x = tri.point(tri.vertex(corner));
@@ -118,17 +118,10 @@ bool shouldFlipInMetric(const Triangulation2D& tri, std::uint32_t corner,
 // exists to converge to, so the number of flips is bounded.
 void restoreMetricDelaunay(Triangulation2D& tri, std::vector<std::uint32_t> stack,
                            const SurfaceMetric& metric) {
-  std::size_t budget = 4 * stack.size();
-  while (!stack.empty() && budget > 0) {
-    const std::uint32_t c = stack.back();
-    stack.pop_back();
-    if (!shouldFlipInMetric(tri, c, metric)) continue;
-    const std::uint32_t c2 = tri.neighbour(c);
-    tri.flip(c);
-    --budget;
-    const std::uint32_t t = c / 3, t2 = c2 / 3;
-    stack.insert(stack.end(), {3 * t, 3 * t + 2, 3 * t2, 3 * t2 + 2});
-  }
+  const std::size_t budget = 4 * stack.size();
+  tri.flipWhile(
+      std::move(stack),
+      [&](std::uint32_t c) { return shouldFlipInMetric(tri, c, metric); }, budget);
 }
 
 }  // namespace

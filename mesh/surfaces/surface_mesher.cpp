@@ -9,10 +9,7 @@
 
 #include "mesh/surfaces/constrained_delaunay.h"
 #include "mesh/curves/curve_mesher.h"
-#include "mesh/surfaces/frontal_refinement.h"
 #include "mesh/core/mesh_error.h"
-#include "mesh/surfaces/mesh_adapt.h"
-#include "mesh/surfaces/smoothing.h"
 #include "mesh/surfaces/surface_metric.h"
 
 namespace geomesh {
@@ -94,16 +91,17 @@ Triangulation2D triangulateBoundary(const SurfaceInput& in, const std::vector<Ve
   return tri;
 }
 
-// Target sizes at the triangulation's vertices. Extended from the boundary: the mean length
-// of the boundary segments at each boundary node (what the curve meshes actually realised,
-// so that the interior matches them), or the node's own size for an isolated embedded
-// point. Not extended: sizeMax everywhere.
-std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh& mesh,
-                                  const std::vector<double>& nodeSizes) {
-  std::vector<double> sizes(Triangulation2D::kFirstVertex, 0.0);
+// Sets the target sizes at the triangulation's vertices. Extended from the boundary: the mean
+// length of the boundary segments at each boundary node (what the curve meshes actually realised,
+// so that the interior matches them), or the node's own size for an isolated embedded point. Not
+// extended: sizeMax everywhere.
+void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh& mesh,
+                      Triangulation2D& tri) {
+  constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   if (!rules.extendFromBoundary) {
-    sizes.resize(sizes.size() + in.nodes.size(), rules.finish(rules.sizeMax));
-    return sizes;
+    for (std::uint32_t k = 0; k < in.nodes.size(); ++k)
+      tri.setSize(k + first, rules.finish(rules.sizeMax));
+    return;
   }
   std::vector<double> total(in.nodes.size(), 0.0);
   std::vector<int> count(in.nodes.size(), 0);
@@ -113,30 +111,18 @@ std::vector<double> boundarySizes(const SurfaceInput& in, const SizeRules& rules
     ++count[s.a], ++count[s.b];
   }
   const double fallback = rules.finish(rules.defaultSize);
-  for (std::size_t k = 0; k < in.nodes.size(); ++k) {
+  for (std::uint32_t k = 0; k < in.nodes.size(); ++k) {
     const NodeIndex n = in.nodes[k];
     if (count[k] > 0)
-      sizes.push_back(total[k] / count[k]);
+      tri.setSize(k + first, total[k] / count[k]);
     else
-      sizes.push_back(n < nodeSizes.size() && nodeSizes[n] > 0 ? nodeSizes[n] : fallback);
+      tri.setSize(k + first, mesh.nodeSize(n) > 0 ? mesh.nodeSize(n) : fallback);
   }
-  return sizes;
-}
-
-// The domain's triangles of a triangulation, with all its points.
-PlanarMesh planarMesh(const Triangulation2D& tri, const std::vector<std::uint8_t>& inside,
-                      std::vector<double> sizes) {
-  PlanarMesh out{{tri.points().begin(), tri.points().end()}, {}, std::move(sizes)};
-  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t)
-    if (inside[t])
-      for (std::uint32_t i = 0; i < 3; ++i) out.triangles.push_back(tri.vertex(3 * t + i));
-  return out;
 }
 
 // Copies the triangles and their new vertices into the surface's EntityMesh.
 void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame& frame,
-               const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh,
-               std::vector<double>& nodeSizes) {
+               const SurfaceGeometry& g, EntityMesh& em, Mesh& mesh) {
   constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   const std::uint32_t boundaryEnd = first + static_cast<std::uint32_t>(in.nodes.size());
   const std::uint32_t pointCount = static_cast<std::uint32_t>(planar.points.size());
@@ -151,40 +137,17 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
     globalOf[v] = node;
     em.nodes.push_back(node);
     em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
-    if (nodeSizes.size() <= node) nodeSizes.resize(node + 1, 0);
-    nodeSizes[node] = planar.sizes[v];
+    mesh.setNodeSize(node, planar.sizes[v]);
   }
   ElementBlock& triangles = em.block(ElementType::Triangle3);
   for (std::uint32_t v : planar.triangles) triangles.nodes.push_back(globalOf[v]);
 }
 
-// Fills the boundary triangulation with the algorithm asked for.
-PlanarMesh meshInterior(Triangulation2D tri, std::vector<std::uint8_t> inside,
-                        std::vector<double> sizes, const SurfaceInput& in, int algorithm2D,
-                        int smoothingPasses, const SurfaceMetric* metric,
-                        const WorkPlaneSize* field) {
-  const std::uint32_t firstMovable =
-      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
-  if (algorithm2D == algorithm2d::kMeshAdapt)
-    return adaptMesh(tri, inside, sizes, firstMovable, smoothingPasses, metric, field);
-  if (algorithm2D == algorithm2d::kFrontalDelaunayQuads) {
-    // Plain smoothing would pull the square cells out of shape.
-    refineFrontalQuads(tri, inside, sizes, metric, field);
-    smoothTriangulation(tri, inside, firstMovable, smoothingPasses, metric,
-                        SmoothingGuard::WorstQuality);
-  } else if (algorithm2D != algorithm2d::kInitialMeshOnly) {
-    (algorithm2D == algorithm2d::kDelaunay ? refineDelaunay : refineFrontal)(tri, inside, sizes,
-                                                                             metric, field);
-    smoothTriangulation(tri, inside, firstMovable, smoothingPasses, metric);
-  }
-  return planarMesh(tri, inside, std::move(sizes));
-}
-
 }  // namespace
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
-                 int smoothingPasses, Mesh& mesh, std::vector<double>& nodeSizes,
-                 const SizeFields* fields, int algorithm2D) {
+                 int smoothingPasses, Mesh& mesh, const SizeFields* fields,
+                 const SurfaceAlgorithm& algorithm) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -206,16 +169,18 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     return rules.finish(fields->at(g.point(frame.toParam(work)), id));
   };
   const bool withField = fields && fields->hasBackground();
-  const PlanarMesh planar =
-      meshInterior(std::move(tri), std::move(inside), boundarySizes(in, rules, mesh, nodeSizes),
-                   in, algorithm2D, smoothingPasses, g.isPlane() ? nullptr : &metric,
-                   withField ? &field : nullptr);
+  setBoundarySizes(in, rules, mesh, tri);
+  const std::uint32_t firstMovable =
+      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
+  SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
+                           g.isPlane() ? nullptr : &metric, withField ? &field : nullptr};
+  const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);
   em.nodes.clear();
   em.parametric.clear();
   em.blocks.clear();
-  storeMesh(planar, in, frame, g, em, mesh, nodeSizes);
+  storeMesh(planar, in, frame, g, em, mesh);
 }
 
 }  // namespace geomesh

@@ -17,7 +17,7 @@ namespace geomesh {
 namespace {
 
 // A self-crossing quadrilateral: its curves mesh, its surface cannot.
-void addBowTie(GeoFactory& geo) {
+void addBowTie(GeometryFactory& geo) {
   geo.addPoint(1, {0, 0, 0}, 0.1);
   geo.addPoint(2, {3, 0, 0}, 0.1);
   geo.addPoint(3, {0, 1, 0}, 0.1);
@@ -27,7 +27,7 @@ void addBowTie(GeoFactory& geo) {
   geo.addPlaneSurface(1, {1});
 }
 
-void addSquare(GeoFactory& geo) {
+void addSquare(GeometryFactory& geo) {
   geo.addPoint(1, {0, 0, 0}, 0.5);
   geo.addPoint(2, {1, 0, 0}, 0.5);
   geo.addPoint(3, {1, 1, 0}, 0.5);
@@ -40,7 +40,7 @@ void addSquare(GeoFactory& geo) {
 TEST(ApiGenerate, MeshesUpToTheDimension) {
   SilentSink log;
   Session session(log);
-  addSquare(session.geo());
+  addSquare(session.factory());
   api::generate(session, 2);
   EXPECT_GT(session.mesh().elementCount(2), 0u);
 }
@@ -50,7 +50,7 @@ TEST(ApiGenerate, AFailurePointsAtTheStatementOfItsEntity) {
   std::ofstream(script) << "// line 1\n// line 2\nPlane Surface(1) = {1};\n";
   SilentSink log;
   Session session(log);
-  addBowTie(session.geo());
+  addBowTie(session.factory());
   session.recordOrigin({2, 1}, {script.string(), 3, 1});
   try {
     api::generate(session, 2);
@@ -68,7 +68,7 @@ TEST(ApiGenerate, AFailurePointsAtTheStatementOfItsEntity) {
 TEST(ApiGenerate, AFailureOnAnEntityOfUnknownOriginStaysAMeshError) {
   SilentSink log;
   Session session(log);
-  addBowTie(session.geo());
+  addBowTie(session.factory());
   EXPECT_THROW(api::generate(session, 2), MeshError);
 }
 
@@ -109,7 +109,7 @@ TEST(NothingToMesh, AModelWithEntitiesOrNoIgnoredStatementIsFine) {
   Session empty(log);
   EXPECT_NO_THROW(api::requireSomethingToMesh(empty, 3));  // nothing ignored: not our case
   Session withGeometry(log);
-  addSquare(withGeometry.geo());
+  addSquare(withGeometry.factory());
   withGeometry.noteIgnoredStatement({"occ.geo", 1, 1});
   EXPECT_NO_THROW(api::requireSomethingToMesh(withGeometry, 2));
 }

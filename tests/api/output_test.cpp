@@ -68,7 +68,7 @@ TEST(OutputFormat, OtherMeshFormatCodesFindTheirRow) {
 TEST(WriteMesh, WritesInTheChosenFormatAndFollowsSaveAll) {
   SilentSink log;
   Session session(log);
-  GeoFactory& geo = session.geo();
+  GeometryFactory& geo = session.factory();
   geo.addPoint(1, {0, 0, 0}, 0.5);
   geo.addPoint(2, {1, 0, 0}, 0.5);
   geo.addLine(1, 1, 2);
@@ -97,9 +97,9 @@ TEST(WriteMesh, AFailureLeavesNoFile) {
 TEST(WriteUnrolledGeometry, WritesTheFlatScript) {
   SilentSink log;
   Session session(log);
-  session.geo().addPoint(1, {0, 0, 0}, 0.5);
-  session.geo().addPoint(2, {1, 0, 0}, 0.5);
-  session.geo().addLine(1, 1, 2);
+  session.factory().addPoint(1, {0, 0, 0}, 0.5);
+  session.factory().addPoint(2, {1, 0, 0}, 0.5);
+  session.factory().addLine(1, 1, 2);
   const fs::path path = scratch::path("api.geo_unrolled");
   api::writeUnrolledGeometry(session, path.string());
   EXPECT_NE(slurp(path).find("Line(1) = {1, 2};"), std::string::npos) << slurp(path);

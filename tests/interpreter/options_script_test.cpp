@@ -18,12 +18,12 @@ TEST(ScriptOptions, SetAndReadIncludingOldNames) {
 TEST(ScriptOptions, GeometryToleranceReachesTheKernel) {
   ScriptRun run;
   run.run("Geometry.Tolerance = 1e-5;");
-  EXPECT_EQ(run.session.geo().tolerance(), 1e-5);
+  EXPECT_EQ(run.session.factory().tolerance(), 1e-5);
   // SetNumber sets a parameter of that name, not the option (as in Gmsh).
   run.run("SetNumber(\"Geometry.Tolerance\", 1e-3);");
-  EXPECT_EQ(run.session.geo().tolerance(), 1e-5);
+  EXPECT_EQ(run.session.factory().tolerance(), 1e-5);
   run.run("Geometry.Tolerance = 1e-3;");
-  EXPECT_EQ(run.session.geo().tolerance(), 1e-3);
+  EXPECT_EQ(run.session.factory().tolerance(), 1e-3);
 }
 
 TEST(ScriptOptions, StringsAndColours) {

@@ -84,9 +84,9 @@ TEST(Shapes, CurvesAndSurfaces) {
 TEST(Shapes, PhysicalRemovalAndDeletePhysicals) {
   ScriptRun run;
   run.run(std::string(kSquare) + "Physical Curve(1) = {1, 2, 3};\nPhysical Curve(1) -= {2};\n");
-  EXPECT_EQ(run.session.geo().physicalGroups().at({1, 1}).entities, (std::vector<int>{1, 3}));
+  EXPECT_EQ(run.session.factory().physicalGroups().at({1, 1}).entities, (std::vector<int>{1, 3}));
   run.run("Delete Physicals;\n");
-  EXPECT_TRUE(run.session.geo().physicalGroups().empty());
+  EXPECT_TRUE(run.session.factory().physicalGroups().empty());
 }
 
 TEST(Shapes, KernelErrorsPointAtTheShape) {

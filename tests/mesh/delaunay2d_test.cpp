@@ -130,6 +130,110 @@ TEST(ConstrainedDelaunay, RecoversSegmentsCrossingManyTriangles) {
   EXPECT_NEAR(area, 9.0, 1e-12);
 }
 
+// The square of side 3 with random points inside, its sides recovered.
+Triangulation2D constrainedSquare(std::size_t interior) {
+  std::vector<Vec2> points{{-1.5, -1.5}, {1.5, -1.5}, {1.5, 1.5}, {-1.5, 1.5}};
+  const std::vector<Vec2> inner = randomPoints(interior, 7);
+  points.insert(points.end(), inner.begin(), inner.end());
+  Triangulation2D tri = delaunayTriangulation(points);
+  constexpr std::uint32_t f = Triangulation2D::kFirstVertex;
+  std::vector<ConstrainedSegment> sides;
+  for (std::uint32_t k = 0; k < 4; ++k) sides.push_back({f + k, f + (k + 1) % 4});
+  EXPECT_EQ(recoverSegments(tri, sides), -1);
+  return tri;
+}
+
+TEST(Triangulation2D, KeepTrianglesLeavesTheDomainWithItsBoundaryOnTheHull) {
+  Triangulation2D tri = constrainedSquare(200);
+  const std::vector<std::uint8_t> inside = classifyInside(tri);
+  const auto count = static_cast<std::size_t>(std::count(inside.begin(), inside.end(), 1));
+  Triangulation2D domain = tri;
+  domain.keepTriangles(inside);
+  ASSERT_EQ(domain.triangleCount(), count);
+  expectValidTriangulation(domain);
+  std::size_t hullEdges = 0;
+  for (std::uint32_t c = 0; c < 3 * domain.triangleCount(); ++c) {
+    EXPECT_TRUE(domain.alive(c / 3));
+    EXPECT_EQ(domain.neighbour(c) == kNone, domain.kind(c) == EdgeKind::Boundary);
+    hullEdges += domain.neighbour(c) == kNone;
+  }
+  EXPECT_EQ(hullEdges, 4u);
+  for (std::uint32_t v = 0; v < Triangulation2D::kFirstVertex; ++v)
+    EXPECT_FALSE(domain.inMesh(v));
+  for (std::uint32_t v = Triangulation2D::kFirstVertex; v < domain.pointCount(); ++v) {
+    ASSERT_TRUE(domain.inMesh(v));
+    std::vector<std::uint32_t> ring;
+    // Corners are on the hull; the random points are inside.
+    EXPECT_EQ(domain.ring(v, ring), v >= Triangulation2D::kFirstVertex + 4) << v;
+    for (std::uint32_t c : ring) EXPECT_EQ(domain.vertex(c), v);
+  }
+}
+
+// Flips, splits and Bowyer-Watson insertion share the storage: a split after a collapse
+// reuses the dead triangles, and the domain can still take Delaunay insertions.
+TEST(Triangulation2D, LocalOperationsAndInsertionShareTheTriangles) {
+  Triangulation2D tri = constrainedSquare(50);
+  tri.keepTriangles(classifyInside(tri));
+  const std::size_t triangles = tri.triangleCount();
+  const std::uint32_t v = Triangulation2D::kFirstVertex + 4;  // a random interior point
+  std::vector<std::uint32_t> ring;
+  ASSERT_TRUE(tri.ring(v, ring));
+  // Collapse onto the neighbour whose removal keeps every triangle positive.
+  bool collapsed = false;
+  for (std::uint32_t k = 0; k < ring.size() && !collapsed; ++k) {
+    const std::uint32_t w = tri.vertex(Triangulation2D::nextCorner(ring[k]));
+    bool valid = true;
+    for (std::uint32_t c : ring) {
+      const std::uint32_t b = tri.vertex(Triangulation2D::nextCorner(c));
+      const std::uint32_t a = tri.vertex(Triangulation2D::prevCorner(c));
+      if (a != w && b != w) valid = valid && orient2d(tri.point(w), tri.point(b), tri.point(a)) > 0;
+    }
+    if (!valid) continue;
+    tri.collapse(v, w, ring);
+    collapsed = true;
+  }
+  ASSERT_TRUE(collapsed);
+  EXPECT_FALSE(tri.inMesh(v));
+  std::size_t alive = 0;
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t) alive += tri.alive(t);
+  EXPECT_EQ(alive, triangles - 2);
+  // Split some free edge at its midpoint: the two dead triangles come back.
+  std::uint32_t edge = kNone;
+  for (std::uint32_t c = 0; c < 3 * tri.triangleCount() && edge == kNone; ++c)
+    if (tri.alive(c / 3) && tri.neighbour(c) != kNone) edge = c;
+  ASSERT_NE(edge, kNone);
+  const Vec2 a = tri.point(tri.vertex(Triangulation2D::nextCorner(edge)));
+  const Vec2 b = tri.point(tri.vertex(Triangulation2D::prevCorner(edge)));
+  tri.split(edge, tri.addPoint({0.5 * (a.u + b.u), 0.5 * (a.v + b.v)}));
+  EXPECT_EQ(tri.triangleCount(), triangles);
+  for (std::uint32_t t = 0; t < tri.triangleCount(); ++t) EXPECT_TRUE(tri.alive(t));
+  // Then a Delaunay insertion near the centre.
+  const std::uint32_t p = tri.addPoint({0.01, 0.02});
+  const std::uint32_t found = tri.locate(tri.point(p), 0);
+  ASSERT_NE(found, kNone);
+  ASSERT_EQ(tri.insert(p, found), Triangulation2D::InsertStatus::Inserted);
+  EXPECT_TRUE(tri.inMesh(p));
+  expectValidTriangulation(tri);
+}
+
+// Target sizes are stored per point: one value for each, whatever adds or cuts.
+TEST(Triangulation2D, SizesStayInStepWithThePoints) {
+  Triangulation2D tri = constrainedSquare(20);
+  ASSERT_EQ(tri.sizes().size(), tri.pointCount());
+  for (std::uint32_t v = 0; v < tri.pointCount(); ++v) {
+    EXPECT_EQ(tri.size(v), 0);
+    tri.setSize(v, 1.0 + v);
+  }
+  const std::uint32_t extra = tri.addPoint({0.25, 0.25});
+  EXPECT_EQ(tri.sizes().size(), tri.pointCount());
+  EXPECT_EQ(tri.size(extra), 0);
+  tri.removeLastPoint();
+  EXPECT_EQ(tri.sizes().size(), tri.pointCount());
+  tri.keepTriangles(classifyInside(tri));
+  ASSERT_EQ(tri.sizes().size(), tri.pointCount());
+  for (std::uint32_t v = 0; v < tri.pointCount(); ++v) EXPECT_EQ(tri.size(v), 1.0 + v);
+}
+
 TEST(SpatialSort, IsADeterministicPermutationWithShortSteps) {
   const std::vector<Vec2> points = randomPoints(20000, 13);
   const std::vector<std::uint32_t> order = spatialOrder(points);

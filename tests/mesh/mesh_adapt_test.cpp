@@ -16,7 +16,7 @@
 #include "mesh/curves/curve_mesher.h"
 #include "mesh/pipeline/generate.h"
 #include "mesh/checks/mesh_check.h"
-#include "mesh/surfaces/modifiable_triangulation.h"
+#include "mesh/surfaces/triangulation2d.h"
 #include "mesh/core/quality.h"
 #include "mesh/surfaces/surface_mesher.h"
 #include "mesh_test_models.h"
@@ -37,7 +37,7 @@ class RecordingSink final : public MessageSink {
 
 Mesh meshAdapt(const Model& model) {
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kMeshAdapt;
+  options.algorithm2D = findSurfaceAlgorithm("meshadapt")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(model, options, 2, mesh, log);
@@ -289,7 +289,7 @@ TEST(FrontalQuads, SquareCellsFollowTheBoundary) {
   for (double degrees : {0.0, 30.0}) {
     const Model model = turnedSquare(degrees);
     MeshOptions options;
-    options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+    options.algorithm2D = findSurfaceAlgorithm("delquad")->code;
     Mesh mesh;
     SilentSink log;
     generateMesh(model, options, 2, mesh, log);
@@ -306,7 +306,7 @@ TEST(FrontalQuads, RecombinedOnlyWhenAsked) {
   Model model = turnedSquare(0);
   model.meshConstraints().recombinedSurfaces[1] = 45;
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+  options.algorithm2D = findSurfaceAlgorithm("delquad")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(model, options, 2, mesh, log);
@@ -324,7 +324,7 @@ TEST(FrontalQuads, CurvedBoundaryAndHole) {
       b.polygon({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 0.05);
   b.surface({disc, hole});
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kFrontalDelaunayQuads;
+  options.algorithm2D = findSurfaceAlgorithm("delquad")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, options, 2, mesh, log);
@@ -345,8 +345,8 @@ TEST(FrontalQuads, CurvedBoundaryAndHole) {
 }
 
 // Every neighbour link goes both ways across the same two vertices.
-void expectConsistent(const ModifiableTriangulation& m) {
-  using T = ModifiableTriangulation;
+void expectConsistent(const Triangulation2D& m) {
+  using T = Triangulation2D;
   for (std::uint32_t t = 0; t < m.triangleCount(); ++t) {
     if (!m.alive(t)) continue;
     for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
@@ -360,13 +360,13 @@ void expectConsistent(const ModifiableTriangulation& m) {
   }
 }
 
-std::size_t aliveCount(const ModifiableTriangulation& m) {
+std::size_t aliveCount(const Triangulation2D& m) {
   std::size_t n = 0;
   for (std::uint32_t t = 0; t < m.triangleCount(); ++t) n += m.alive(t);
   return n;
 }
 
-TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
+TEST(Triangulation2D, SplitFlipAndCollapseKeepTheLinks) {
   // The unit square in two triangles.
   const std::vector<Vec2> corners{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   Triangulation2D tri = delaunayTriangulation(corners);
@@ -374,14 +374,15 @@ TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
   constexpr std::uint32_t first = Triangulation2D::kFirstVertex;
   for (std::uint32_t k = 0; k < 4; ++k) sides.push_back({k + first, (k + 1) % 4 + first});
   ASSERT_EQ(recoverSegments(tri, sides), -1);
-  ModifiableTriangulation m(tri, classifyInside(tri));
+  Triangulation2D m = tri;
+  m.keepTriangles(classifyInside(tri));
   ASSERT_EQ(aliveCount(m), 2u);
   std::uint32_t diagonal = kNone;
   for (std::uint32_t c = 0; c < 6 && diagonal == kNone; ++c)
     if (m.neighbour(c) != kNone) diagonal = c;
   ASSERT_NE(diagonal, kNone);
-  const std::uint32_t a = m.vertex(ModifiableTriangulation::nextCorner(diagonal));
-  const std::uint32_t b = m.vertex(ModifiableTriangulation::prevCorner(diagonal));
+  const std::uint32_t a = m.vertex(Triangulation2D::nextCorner(diagonal));
+  const std::uint32_t b = m.vertex(Triangulation2D::prevCorner(diagonal));
   const std::uint32_t centre = m.addPoint({0.5, 0.5});
   m.split(diagonal, centre);
   expectConsistent(m);
@@ -390,15 +391,15 @@ TEST(ModifiableTriangulation, SplitFlipAndCollapseKeepTheLinks) {
   EXPECT_TRUE(m.ring(centre, ring));  // interior
   EXPECT_EQ(ring.size(), 4u);
   EXPECT_FALSE(m.ring(a, ring));      // on the boundary
-  EXPECT_EQ(m.findEdge(a, b), kNone);
-  const std::uint32_t spoke = m.findEdge(centre, a);
+  EXPECT_EQ(m.findUndirectedEdge(a, b), kNone);
+  const std::uint32_t spoke = m.findUndirectedEdge(centre, a);
   ASSERT_NE(spoke, kNone);
   m.flip(spoke);  // links only: the new edge runs through the centre, which is flat here
   expectConsistent(m);
-  EXPECT_EQ(m.findEdge(centre, a), kNone);
+  EXPECT_EQ(m.findUndirectedEdge(centre, a), kNone);
   EXPECT_TRUE(m.ring(centre, ring));
   EXPECT_EQ(ring.size(), 3u);
-  const std::uint32_t into = m.vertex(ModifiableTriangulation::nextCorner(ring[0]));
+  const std::uint32_t into = m.vertex(Triangulation2D::nextCorner(ring[0]));
   m.collapse(centre, into, ring);
   expectConsistent(m);
   EXPECT_EQ(aliveCount(m), 2u);
@@ -409,7 +410,7 @@ TEST(MeshAdapt, InitialMeshOnlyAddsNoNode) {
   PolygonModelBuilder b;
   b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
   MeshOptions options;
-  options.algorithm2D = algorithm2d::kInitialMeshOnly;
+  options.algorithm2D = findSurfaceAlgorithm("initial2d")->code;
   Mesh mesh;
   SilentSink log;
   generateMesh(b.model, options, 2, mesh, log);
@@ -423,9 +424,9 @@ TEST(MeshAdapt, AutomaticIsDelaunayOnPlanesAndMeshAdaptElsewhere) {
   PolygonModelBuilder b;
   b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
   MeshOptions automatic, delaunay, adapt;
-  automatic.algorithm2D = algorithm2d::kAutomatic;
-  delaunay.algorithm2D = algorithm2d::kDelaunay;
-  adapt.algorithm2D = algorithm2d::kMeshAdapt;
+  automatic.algorithm2D = findSurfaceAlgorithm("auto")->code;
+  delaunay.algorithm2D = findSurfaceAlgorithm("del2d")->code;
+  adapt.algorithm2D = findSurfaceAlgorithm("meshadapt")->code;
   Mesh meshes[3];
   SilentSink log;
   generateMesh(b.model, automatic, 2, meshes[0], log);
@@ -444,7 +445,7 @@ TEST(MeshAdapt, SurfaceAlgorithmOverridesTheOptionAndUnknownOnesWarn) {
   const Mesh frontal = meshAdapt([&] {
     PolygonModelBuilder other;
     other.surface({other.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1)});
-    other.model.meshConstraints().surfaceAlgorithms[1] = algorithm2d::kFrontalDelaunay;
+    other.model.meshConstraints().surfaceAlgorithms[1] = findSurfaceAlgorithm("front2d")->code;
     return other.model;
   }());
   Mesh byOption;

@@ -1,0 +1,55 @@
+// The rows of the 3D algorithm registry.
+#include "mesh/volumes/volume_algorithms.h"
+
+#include "mesh/volumes/volume_mesher.h"
+
+namespace geomesh {
+namespace {
+
+constexpr int kDelaunay = 1;
+
+// Adding a 3D algorithm: a file with its function (meshing one volume from the triangles of
+// its boundary, as meshVolume does), then one row here: its Mesh.Algorithm3D code (rows stay
+// sorted by code), its -algo name (and an alias or null), the title messages use, the
+// function, and the code to fall back on if the function is null.
+constexpr VolumeAlgorithm kRows[] = {
+    {1, "del3d", nullptr, "Delaunay", meshVolume, kDelaunay},
+    {3, "initial3d", nullptr, "Initial mesh only", nullptr, kDelaunay},
+    {4, "front3d", "netgen", "Frontal", nullptr, kDelaunay},
+    {7, "mmg3d", nullptr, "MMG3D", nullptr, kDelaunay},
+    {9, "rtree", nullptr, "R-tree", nullptr, kDelaunay},
+    {10, "hxt", nullptr, "HXT", nullptr, kDelaunay},
+};
+
+}  // namespace
+
+std::span<const VolumeAlgorithm> volumeAlgorithms() {
+  return kRows;
+}
+
+const VolumeAlgorithm* findVolumeAlgorithm(int code) {
+  for (const VolumeAlgorithm& row : kRows)
+    if (row.code == code) return &row;
+  return nullptr;
+}
+
+const VolumeAlgorithm* findVolumeAlgorithm(std::string_view name) {
+  for (const VolumeAlgorithm& row : kRows)
+    if (name == row.name || (row.alias && name == row.alias)) return &row;
+  return nullptr;
+}
+
+const VolumeAlgorithm& volumeAlgorithmFor(int code) {
+  const VolumeAlgorithm* row = findVolumeAlgorithm(code);
+  if (row && row->mesh) return *row;
+  return *findVolumeAlgorithm(row ? row->fallback : kDelaunay);
+}
+
+std::string volumeAlgorithmUnavailable(int code) {
+  const VolumeAlgorithm* row = findVolumeAlgorithm(code);
+  if (!row) return std::to_string(code) + " is not a 3D meshing algorithm";
+  if (row->mesh) return {};
+  return std::to_string(code) + " (" + row->title + ") is not available";
+}
+
+}  // namespace geomesh
