@@ -5,7 +5,7 @@
 #include <iterator>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "kernel/geometry_error.h"
 
 namespace geomesh {
@@ -135,6 +135,7 @@ void Interpreter::defineBox(const ast::CommandStmt& command, const SourceLocatio
     made = session_.factory().addBox(clampedInteger<int>(tag), Vec3{xs[0], xs[1], xs[2]},
                                      Vec3{xs[3], xs[4], xs[5]});
   } catch (const UnsupportedOperation&) {
+    session_.noteIgnoredStatement(where);
     warn(where, "'Box' needs SetFactory(\"OpenCASCADE\"); ignored");
     return;
   } catch (const GeometryError& error) {
