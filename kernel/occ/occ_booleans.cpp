@@ -272,4 +272,16 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   return out;
 }
 
+// Coherence: the entities of the highest dimension present, fragmented together, as the
+// reference makes coincident entities one (lower-dimensional ones stay as they are).
+void OccFactory::coherence() {
+  for (int dim = 3; dim >= 0; --dim) {
+    if (shapes_->byTag[dim].empty()) continue;
+    std::vector<EntityId> all;
+    for (const auto& entry : shapes_->byTag[dim]) all.push_back({dim, entry.first});
+    if (all.size() > 1) boolean(BooleanOperation::Fragments, all, {}, true, true);
+    return;
+  }
+}
+
 }  // namespace geomesh

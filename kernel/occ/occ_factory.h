@@ -89,6 +89,8 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   std::vector<EntityId> boolean(BooleanOperation operation, const std::vector<EntityId>& objects,
                                 const std::vector<EntityId>& tools, bool deleteObjects,
                                 bool deleteTools, int tag = -1) override;
+  // Coherence: the entities of the highest dimension present, fragmented together.
+  void coherence() override;
   // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
   void setBooleanTolerance(double tolerance) override { booleanTolerance_ = tolerance; }
   const std::vector<Replacement>& lastReplacements() const override { return replacements_; }
