@@ -6,6 +6,7 @@
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_Surface.hxx>
+#include <Standard_Failure.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
@@ -91,13 +92,17 @@ class OccSurface final : public SurfaceGeometry {
 // The closest point of the underlying surface, searched within the face's parameter bounds;
 // when the search fails (a degenerate input) the bounds' centre is returned.
 Vec2 OccSurface::project(Vec3 p) const {
-  GeomAPI_ProjectPointOnSurf projection(gp_Pnt(p.x, p.y, p.z), geom_, bounds_.u.min,
-                                        bounds_.u.max, bounds_.v.min, bounds_.v.max);
-  if (projection.NbPoints() == 0)
-    return {(bounds_.u.min + bounds_.u.max) / 2, (bounds_.v.min + bounds_.v.max) / 2};
-  Standard_Real u = 0, v = 0;
-  projection.LowerDistanceParameters(u, v);
-  return {u, v};
+  const Vec2 centre{(bounds_.u.min + bounds_.u.max) / 2, (bounds_.v.min + bounds_.v.max) / 2};
+  try {
+    GeomAPI_ProjectPointOnSurf projection(gp_Pnt(p.x, p.y, p.z), geom_, bounds_.u.min,
+                                          bounds_.u.max, bounds_.v.min, bounds_.v.max);
+    if (projection.NbPoints() == 0) return centre;
+    Standard_Real u = 0, v = 0;
+    projection.LowerDistanceParameters(u, v);
+    return {u, v};
+  } catch (const Standard_Failure&) {  // a degenerate surface: as when no point is found
+    return centre;
+  }
 }
 
 }  // namespace
