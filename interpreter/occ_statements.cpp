@@ -217,7 +217,10 @@ std::vector<EntityId> Interpreter::booleanShapes(const std::string& word,
         fail(where, word + ": " + kEntityKinds[e.dim] + " " + std::to_string(std::abs(e.tag)) +
                         " was made by the built-in kernel; OpenCASCADE operations take "
                         "OpenCASCADE entities only");
-  solids->setBooleanTolerance(session_.options().number("Geometry.ToleranceBoolean"));
+  const OptionRegistry& options = session_.options();
+  solids->setBooleanOptions({options.number("Geometry.ToleranceBoolean"),
+                             options.number("Geometry.OCCBooleanSimplify") != 0,
+                             options.number("Geometry.OCCBooleanPreserveNumbering") != 0});
   std::vector<EntityId> result;
   try {
     result = solids->boolean(booleanOperation(word), objects, tools, deleteObjects, deleteTools,

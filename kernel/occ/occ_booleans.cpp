@@ -236,12 +236,13 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
 
   std::unique_ptr<BRepAlgoAPI_BuilderAlgo> maker = makeOperation(op);
   const TopoDS_Shape result = guarded(name, [&] {
-    TopoDS_Shape shape = runOperation(*maker, op, inputs, objects.size(), booleanTolerance_);
+    TopoDS_Shape shape = runOperation(*maker, op, inputs, objects.size(), booleanOptions_.tolerance);
     for (BooleanInput& in : inputs) {
       in.deleted = maker->IsDeleted(in.shape);
       in.modified = maker->Modified(in.shape);
     }
-    return op == BooleanOperation::Union ? unify(shape, inputs) : shape;
+    return op == BooleanOperation::Union && booleanOptions_.unifyUnion ? unify(shape, inputs)
+                                                                        : shape;
   });
 
   int taggedDim = 0;
@@ -261,6 +262,7 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   // A deleted input turned into a single shape of its dimension passes its tag on (to that
   // shape alone: its sub-shapes are numbered with the rest of the result).
   for (const BooleanInput& in : inputs) {
+    if (!booleanOptions_.preserveNumbering) break;
     if (!in.remove || in.deleted || in.modified.Extent() != 1) continue;
     const TopoDS_Shape& image = in.modified.First();
     if (shapeDimension(image) == in.id.dim && !shapes_->isBound(in.id.dim, image) &&
