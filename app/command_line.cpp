@@ -3,6 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <string>
+
+#include "io/formats.h"
 
 #include "mesh/surfaces/surface_algorithms.h"
 #include "mesh/volumes/volume_algorithms.h"
@@ -127,7 +130,7 @@ Meshes a .geo script in batch mode and writes the mesh (MSH 4.1 by default).
 Mesh:
   -0, -1, -2, -3         stop after evaluating the geometry (-0), or mesh up to dimension 1, 2, 3
   -o FILE                output file (default: the script's name with .msh)
-  -format FORMAT         output format: msh41 (msh4, msh), msh22 (msh2)
+)" + std::string("  -format FORMAT         output format: ") + formatNameGroups() + R"(
   -bin                   binary output
   -save_all              save every element, not only those of physical groups
   -algo NAME             2D/3D algorithm: meshadapt, del2d, front2d, del3d, ...

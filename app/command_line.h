@@ -13,7 +13,7 @@ struct CommandLine {
   std::vector<std::string> files;
   std::optional<int> dimension;  // -0 -1 -2 -3
   std::string output;            // -o
-  std::string format;            // -format (msh41, msh4, msh22, msh2, msh)
+  std::string format;            // -format: a name of the format table (io/formats.h)
   bool binary = false;           // -bin
   bool saveAll = false;          // -save_all
   bool check = false;            // -check

@@ -2,21 +2,21 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <sstream>
 
+#include "api/meshing.h"
+#include "api/options.h"
+#include "api/output.h"
+#include "api/session.h"
 #include "app/command_line.h"
 #include "app/console_log.h"
 #include "app/mesh_summary.h"
 #include "interpreter/diagnostics.h"
-#include "interpreter/session.h"
-#include "kernel/unrolled_geo_hooks.h"
-#include "mesh/pipeline/generate.h"
-#include "io/msh_reader.h"
-#include "io/msh_writer.h"
+#include "interpreter/run_script.h"
+#include "io/formats.h"
 #include "mesh/checks/mesh_check.h"
+#include "mesh/core/mesh_error.h"
 
 namespace geomesh {
 
@@ -60,49 +60,13 @@ std::string outputPath(const CommandLine& cl) {
   return p.string();
 }
 
-// Without -format, Mesh.Format decides: 1 is MSH, 10 (the default) chooses by the output
-// file's extension. Only MSH is written so far: anything else is refused before meshing.
-void requireMshOutput(const std::string& path, double format) {
-  if (format == 1) return;
-  if (format != 10)
-    throw CommandLineError("Mesh.Format " + std::to_string(static_cast<int>(format)) +
-                           " is not supported yet: only MSH (1) is written");
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext != ".msh")
-    throw CommandLineError("cannot write '" + path + "': the '" + ext +
-                           "' format is not supported yet (only .msh)");
-}
-
-MshWriteOptions writeOptions(const CommandLine& cl, const OptionRegistry& options) {
-  MshWriteOptions w;
-  w.saveAll = options.number("Mesh.SaveAll") != 0;
-  w.binary = options.number("Mesh.Binary") != 0;
-  w.version = options.number("Mesh.MshFileVersion");
-  if (cl.format == "msh41" || cl.format == "msh4" || cl.format == "msh") {
-    w.version = 4.1;
-  } else if (cl.format == "msh22" || cl.format == "msh2") {
-    w.version = 2.2;
-  } else if (!cl.format.empty()) {
-    throw CommandLineError("unsupported output format '" + cl.format +
-                           "' (supported: msh41, msh4, msh22, msh2)");
-  } else {
-    requireMshOutput(outputPath(cl), options.number("Mesh.Format"));
-  }
-  if (w.version >= 4) {
-    w.version = 4.1;
-  } else {
-    w.version = 2.2;
-  }
-  return w;
-}
-
 // Evaluates the script; returns false if the script asked to stop (Exit).
 bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
   Stopwatch watch;
   const std::string& file = cl.files.front();
   log.info("Reading '" + file + "'...");
   try {
-    session.runFile(file);
+    runScriptFile(session, file);
   } catch (const ScriptExit&) {
     log.info("Script called Exit: stopping");
     return false;
@@ -111,79 +75,69 @@ bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
   return true;
 }
 
-// Line `line` of a script file, for quoting in a diagnostic; empty if unreadable.
-std::string sourceLine(const std::string& path, int line) {
-  std::ifstream in(path, std::ios::binary);
-  SourceFile file{path, {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()}};
-  return std::string(file.lineText(line));
-}
-
 // -0: the evaluated geometry as a flat script, <script>.geo_unrolled unless -o says otherwise.
 void writeUnrolled(const CommandLine& cl, Session& session, ConsoleLog& log) {
   const std::string path = cl.output.empty() ? cl.files.front() + "_unrolled" : cl.output;
-  const std::string partial = path + ".partial";
   log.info("Writing '" + path + "'...");
-  {
-    std::ofstream out(partial, std::ios::binary);
-    session.factory().writeUnrolled(out, meshConstraintHooks(session.model().meshConstraints()));
-    out.close();
-    if (!out) {
-      std::filesystem::remove(partial);
-      throw std::runtime_error("cannot write '" + path + "'");
-    }
-  }
-  std::filesystem::rename(partial, path);
+  api::writeUnrolledGeometry(session, path);
   log.info("Done writing '" + path + "'");
 }
 
+// Meshes; when meshing fails and -keep_partial asks for it, writes what was meshed first.
+void generate(const CommandLine& cl, Session& session, const MeshFormat& format,
+              const std::string& path, ConsoleLog& log) {
+  auto writePartial = [&] {
+    if (!cl.keepPartial) return;
+    api::writeMesh(session, path, format);
+    log.warning("meshing failed; the partial mesh was written to '" + path + "' (-keep_partial)");
+  };
+  try {
+    api::generate(session, *cl.dimension);
+  } catch (const MeshError&) {
+    writePartial();
+    throw;
+  } catch (const ScriptError&) {  // a MeshError located at the statement of its entity
+    writePartial();
+    throw;
+  }
+}
+
 void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
-  const int dim = *cl.dimension;
-  if (dim == 0) {
+  if (*cl.dimension == 0) {
     session.synchronize();
     log.info("Geometry: " + describeModel(session.model()));
     writeUnrolled(cl, session, log);
     return;
   }
-  const MshWriteOptions w = writeOptions(cl, session.options());
-  Stopwatch watch;
   const std::string path = outputPath(cl);
-  try {
-    session.generate(dim);
-  } catch (const MeshError& error) {
-    if (cl.keepPartial) {
-      writeMshFile(path, session.model(), session.mesh(), w);
-      log.warning("meshing failed; the partial mesh was written to '" + path + "' (-keep_partial)");
-    }
-    // Point at the statement that defined the entity, when the script did.
-    if (auto where = session.origin(error.entity))
-      throw ScriptError(*where, error.what(), sourceLine(where->file, where->line));
-    throw;
-  }
+  const MeshFormat& format = api::outputFormat(session.options(), path, cl.format);
+  api::requireSomethingToMesh(session, *cl.dimension);
+  Stopwatch watch;
+  generate(cl, session, format, path, log);
   log.info("Meshing done (" + formatSeconds(watch.seconds()) + ")");
   Stopwatch writeWatch;
   log.info("Writing '" + path + "'...");
-  writeMshFile(path, session.model(), session.mesh(), w);
+  api::writeMesh(session, path, format);
   log.info("Done writing '" + path + "' (" + formatSeconds(writeWatch.seconds()) + ")");
   log.info(formatSummary(summarizeMesh(session.model(), session.mesh())));
 }
 
 bool isMeshFile(const std::string& path) {
-  return std::filesystem::path(path).extension() == ".msh";
+  return findReaderByExtension(std::filesystem::path(path).extension().string()) != nullptr;
 }
 
 // A mesh file as input: read it, check it if asked (-check), convert it if asked (-o/-format).
-int runMeshFile(const CommandLine& cl, ConsoleLog& log) {
+int runMeshFile(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   const std::string& path = cl.files.front();
-  Model model;
-  Mesh mesh;
+  Session session(log, out);
   Stopwatch watch;
   log.info("Reading '" + path + "'...");
-  readMshFile(path, model, mesh);
+  session.readMesh(path);
   log.info("Done reading '" + path + "' (" + formatSeconds(watch.seconds()) + ")");
-  log.info(formatSummary(summarizeMesh(model, mesh)));
+  log.info(formatSummary(summarizeMesh(session.model(), session.mesh())));
   int status = 0;
   if (cl.check) {
-    MeshCheckReport report = checkMesh(model, mesh);
+    MeshCheckReport report = checkMesh(session.model(), session.mesh());
     if (report.ok()) {
       log.info("Check: no problem found");
     } else {
@@ -193,32 +147,20 @@ int runMeshFile(const CommandLine& cl, ConsoleLog& log) {
     }
   }
   if (!cl.output.empty()) {
-    OptionRegistry options;
-    applyOptions(cl, options);
-    writeMshFile(cl.output, model, mesh, writeOptions(cl, options));
+    applyOptions(cl, session.options());
+    api::writeMesh(session, cl.output, api::outputFormat(session.options(), cl.output, cl.format));
     log.info("Wrote '" + cl.output + "'");
   }
   return status;
 }
 
 int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
-  if (isMeshFile(cl.files.front())) return runMeshFile(cl, log);
+  if (isMeshFile(cl.files.front())) return runMeshFile(cl, out, log);
   Session session(log, out);
   session.options().setNumber("General.Verbosity", cl.verbosity);
   session.allowSystemCalls(cl.allowSystemCalls);
-  // -setnumber / -setstring set the option of that name if there is one, else a parameter.
-  for (const auto& [name, value] : cl.setNumbers) {
-    if (session.options().hasNumber(name))
-      session.options().setNumber(name, value);
-    else
-      session.numberOverrides()[name] = value;
-  }
-  for (const auto& [name, value] : cl.setStrings) {
-    if (session.options().hasString(name))
-      session.options().setString(name, value);
-    else
-      session.stringOverrides()[name] = value;
-  }
+  for (const auto& [name, value] : cl.setNumbers) api::setNumber(session, name, value);
+  for (const auto& [name, value] : cl.setStrings) api::setString(session, name, value);
   applyOptions(cl, session.options());
   if (!evaluateScript(cl, session, log)) return 0;
   if (!cl.dimension) {

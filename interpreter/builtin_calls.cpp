@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "stdlib/format.h"
 #include "stdlib/ranges.h"
 #include "stdlib/system_info.h"

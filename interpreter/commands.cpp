@@ -7,7 +7,7 @@
 
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "stdlib/colors.h"
 
 namespace geomesh {

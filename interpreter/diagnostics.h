@@ -1,36 +1,13 @@
 #pragma once
 
-#include <stdexcept>
-#include <string>
-#include <string_view>
+#include <exception>
 
-#include "grammar/source.h"
+#include "grammar/diagnostic.h"
 
 namespace geomesh {
 
-// "file:line:col: <severity>: message", then the source line and a caret under the column
-// (tabs of the source line kept, so the caret lines up in a terminal). `sourceLine` may be
-// empty when the text is not available.
-std::string formatDiagnostic(const SourceLocation& where, std::string_view severity,
-                             std::string_view message, std::string_view sourceLine);
-
-// An error in a script. what() is the complete diagnostic, ready to print as is.
-class ScriptError : public std::runtime_error {
- public:
-  ScriptError(SourceLocation where, std::string message, std::string_view sourceLine);
-
-  const char* what() const noexcept override { return text_.c_str(); }
-  const SourceLocation& location() const { return location_; }
-  const std::string& message() const { return message_; }
-
-  // Adds "  included from file:line:col" for each Include the error came through.
-  void addIncludedFrom(const SourceLocation& include);
-
- private:
-  SourceLocation location_;
-  std::string message_;
-  std::string text_;
-};
+// Script errors (ScriptError, formatDiagnostic) are in grammar/diagnostic.h, so that the
+// library layer under the interpreter reports located errors too.
 
 // Thrown by `Exit;`: evaluation stops successfully, and nothing is meshed.
 class ScriptExit : public std::exception {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "stdlib/ranges.h"
 
 namespace geomesh {

@@ -5,7 +5,7 @@
 #include <iterator>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "kernel/geometry_error.h"
 
 namespace geomesh {

@@ -1,4 +1,4 @@
-#include "interpreter/interpreter.h"
+#include "interpreter/run_script.h"
 
 #include <cmath>
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include "grammar/parse.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "stdlib/edit_distance.h"
 
 namespace geomesh {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "mesh/sizes/math_expression.h"
 
 namespace geomesh {

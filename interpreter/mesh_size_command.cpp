@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "kernel/geometry_error.h"
 
 namespace geomesh {

@@ -4,16 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <fstream>
-#include <functional>
 
+#include "api/meshing.h"
+#include "api/output.h"
+#include "api/session.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
-#include "kernel/unrolled_geo_hooks.h"
-#include "mesh/pipeline/generate.h"
-#include "io/msh_reader.h"
-#include "io/msh_writer.h"
 
 namespace geomesh {
 
@@ -21,40 +17,6 @@ namespace {
 
 std::string extensionOf(const std::filesystem::path& path) {
   return path.extension().string();
-}
-
-MshWriteOptions mshOptions(const OptionRegistry& options) {
-  MshWriteOptions w;
-  w.saveAll = options.number("Mesh.SaveAll") != 0;
-  w.binary = options.number("Mesh.Binary") != 0;
-  w.version = options.number("Mesh.MshFileVersion") >= 4 ? 4.1 : 2.2;
-  return w;
-}
-
-// Writes through a temporary file renamed into place, so a failure (false, or an exception
-// from `write`) leaves nothing behind.
-template <class Write>
-bool writeFileAtomically(const std::filesystem::path& path, Write write) {
-  const std::filesystem::path partial = path.string() + ".partial";
-  std::error_code ignored;
-  {
-    std::ofstream out(partial, std::ios::binary);
-    try {
-      if (out) write(out);
-    } catch (...) {
-      out.close();
-      std::filesystem::remove(partial, ignored);
-      throw;
-    }
-    out.close();
-    if (!out) {
-      std::filesystem::remove(partial, ignored);
-      return false;
-    }
-  }
-  std::error_code failed;
-  std::filesystem::rename(partial, path, failed);
-  return !failed;
 }
 
 // Mesh 2; Save "file"; Merge "file"; Delete name; take one bare argument.
@@ -139,17 +101,18 @@ void Interpreter::meshNow(const ast::Expr& dimension, const SourceLocation& wher
     return;
   }
   try {
-    session_.generate(clampedInteger<int>(dim));
-  } catch (const MeshError& error) {
-    // Point at the statement that defined the entity when the script did, else at Mesh.
-    fail(session_.origin(error.entity).value_or(where), error.what());
+    api::generate(session_, clampedInteger<int>(dim));
+  } catch (const ScriptError& error) {
+    // The statement that defined the entity, quoted from the script text as it was run.
+    fail(error.location(), error.message());
   } catch (const std::runtime_error& error) {
     fail(where, error.what());
   }
 }
 
-// Save "file"; (and Print, which Gmsh treats alike) writes the mesh, the changed options or
-// the unrolled geometry, by the file's extension, relative to the script's directory.
+// Save "file"; (and Print, which Gmsh treats alike) writes the mesh (in the format of
+// io/formats.h its extension names), the changed options or the unrolled geometry, relative
+// to the script's directory.
 void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation& where) {
   const ast::Expr& name = *command.args[0];
   std::filesystem::path path = evaluateString(name);
@@ -162,43 +125,32 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
     return;
   }
   if (ext == ".brep" || ext == ".step" || ext == ".stp") return saveCadFile(shown, where);
-  std::function<void(std::ostream&)> write;
-  if (ext == ".msh") {
-    // Nothing meshed yet: the file still lists the entities, as Gmsh's does.
-    if (session_.mesh().nodeCount() == 0) synchronizeModel(where);
-    const MshWriteOptions options = mshOptions(session_.options());
-    write = [this, options](std::ostream& out) {
-      writeMsh(out, session_.model(), session_.mesh(), options);
-    };
-  } else if (ext == ".opt") {
-    write = [this](std::ostream& out) {
-      for (const auto& option : session_.options().all())
-        if (option.number != option.defaultNumber || option.text != option.defaultText)
-          out << optionListingLine(option) << '\n';
-    };
-  } else if (ext == ".geo_unrolled") {
-    write = [this](std::ostream& out) {
-      session_.factory().writeUnrolled(out,
-                                       meshConstraintHooks(session_.model().meshConstraints()));
-    };
-  } else {
+  const MeshFormat* format =
+      findFormatByExtension(ext, session_.options().number("Mesh.MshFileVersion"));
+  if (!format && ext != ".opt" && ext != ".geo_unrolled") {
     warn(where, "'" + command.words[0] + "' cannot write '" + shown + "': this format is not " +
-                    "supported yet (only .msh, .opt and .geo_unrolled); ignored");
+                    "supported yet (only " + writtenExtensionList() +
+                    ", .opt and .geo_unrolled); ignored");
     return;
   }
-  bool written = false;
+  // Nothing meshed yet: a mesh file still lists the entities, as Gmsh's does.
+  if (format && session_.mesh().nodeCount() == 0) synchronizeModel(where);
   try {
-    written = writeFileAtomically(path, write);
-  } catch (const std::exception& error) {
-    fail(name.loc, "cannot write '" + shown + "': " + error.what());
+    if (format)
+      api::writeMesh(session_, path.string(), *format);
+    else if (ext == ".opt")
+      api::writeChangedOptions(session_, path.string());
+    else
+      api::writeUnrolledGeometry(session_, path.string());
+  } catch (const std::runtime_error& error) {
+    fail(name.loc, error.what());
   }
-  if (!written) fail(name.loc, "cannot write '" + shown + "'");
   session_.log().info("Wrote '" + shown + "'");
 }
 
 // Merge "file.geo"; reads the script as Include does (so do .opt and .geo_unrolled files,
-// which are scripts too). Merge "file.msh"; reads a mesh, as long as the script has no
-// geometry of its own; other files are not merged.
+// which are scripts too). Merge "file.msh"; reads a mesh (any format of io/formats.h with a
+// reader), as long as the script has no geometry of its own; other files are not merged.
 void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocation& where) {
   const ast::Expr& name = *command.args[0];
   const std::string file = evaluateString(name);
@@ -208,9 +160,10 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep" ||
       ext == ".brp")
     return mergeCadFile(file, where);
-  if (ext != ".msh") {
+  if (!findReaderByExtension(ext)) {
+    session_.noteIgnoredStatement(where);
     warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo, .opt, " +
-                    ".geo_unrolled and .msh); ignored");
+                    ".geo_unrolled and " + readExtensionList() + "); ignored");
     return;
   }
   if (session_.hasGeometry() || session_.meshFromFile()) {
@@ -224,7 +177,7 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   const std::string shown = path.lexically_normal().string();
   try {
     session_.readMesh(shown);
-  } catch (const MshReadError& error) {
+  } catch (const std::runtime_error& error) {
     fail(name.loc, error.what());
   }
   session_.log().info("Merged '" + shown + "': " + std::to_string(session_.mesh().nodeCount()) +

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "kernel/geometry_error.h"
 #include "kernel/solid_modeling.h"
 
@@ -81,7 +81,10 @@ SolidModeling::BooleanOperation booleanOperation(const std::string& word) {
 SolidModeling* Interpreter::solidModeling(const std::string& statement,
                                           const SourceLocation& where) {
   SolidModeling* solids = session_.factory().solidModeling();
-  if (!solids) warn(where, "'" + statement + "' needs SetFactory(\"OpenCASCADE\"); ignored");
+  if (!solids) {
+    session_.noteIgnoredStatement(where);
+    warn(where, "'" + statement + "' needs SetFactory(\"OpenCASCADE\"); ignored");
+  }
   return solids;
 }
 

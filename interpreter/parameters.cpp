@@ -1,7 +1,7 @@
 // DefineConstant, DefineNumber and DefineString: values that -setnumber / -setstring given on
 // the command line override.
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 
 namespace geomesh {
 

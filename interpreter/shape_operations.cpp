@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 #include "kernel/geometry_error.h"
 
 namespace geomesh {
@@ -344,6 +344,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
       expr.parts.size() == 1 && !expr.parts[0].isBlock)
     return physicalQuery(expr, entityDimension({w[1]}));
   if (auto shapes = shapeOperation(expr)) return Value::list(asDoubles(tagsOf(*shapes)));
+  session_.noteIgnoredStatement(expr.loc);
   warn(expr.loc, "'" + (w.empty() ? std::string("{..}") : w[0]) +
                      "' is not supported yet; gives an empty list");
   return Value::list({});

@@ -7,7 +7,7 @@
 
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
-#include "interpreter/session.h"
+#include "api/session.h"
 
 namespace geomesh {
 
@@ -195,6 +195,7 @@ std::span<const std::string_view> Interpreter::keywordsStartingNoStatement() {
 
 void Interpreter::unsupportedStatement(const ast::CommandStmt& command,
                                        const SourceLocation& where) {
+  session_.noteIgnoredStatement(where);  // meshing a model this leaves empty is an error
   warn(where, "'" + commandName(command) + "' is not supported yet; ignored");
 }
 

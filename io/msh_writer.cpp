@@ -1,10 +1,8 @@
 #include "io/msh_writer.h"
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "io/atomic_file.h"
 #include "io/msh_sections.h"
 
 namespace geomesh {
@@ -54,34 +52,9 @@ void writeMsh(std::ostream& out, const Model& model, const Mesh& mesh,
   encoder.flush();
 }
 
-namespace {
-
-// A sibling of the destination, so that the final rename stays on one file system.
-std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
-  std::filesystem::path tmp = path;
-  tmp += ".partial";
-  return tmp;
-}
-
-}  // namespace
-
 void writeMshFile(const std::string& path, const Model& model, const Mesh& mesh,
                   const MshWriteOptions& options) {
-  const std::filesystem::path tmp = temporaryPathFor(path);
-  try {
-    {
-      std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
-      if (!file) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
-      writeMsh(file, model, mesh, options);
-      file.close();
-      if (!file) throw std::runtime_error("error while writing '" + tmp.string() + "'");
-    }
-    std::filesystem::rename(tmp, path);
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw std::runtime_error("could not write '" + path + "': " + e.what());
-  }
+  writeFileAtomically(path, [&](std::ostream& out) { writeMsh(out, model, mesh, options); });
 }
 
 }  // namespace geomesh

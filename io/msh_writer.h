@@ -21,8 +21,8 @@ struct MshWriteOptions {
 void writeMsh(std::ostream& out, const Model& model, const Mesh& mesh,
               const MshWriteOptions& options);
 
-// Writes to `path` through a temporary file renamed into place once complete: a failure
-// (thrown as std::runtime_error naming the file) never leaves a partial file behind.
+// Writes to `path` through writeFileAtomically: a failure (thrown as std::runtime_error
+// naming the file) never leaves a partial file behind.
 void writeMshFile(const std::string& path, const Model& model, const Mesh& mesh,
                   const MshWriteOptions& options);
 

@@ -236,7 +236,8 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
 
   std::unique_ptr<BRepAlgoAPI_BuilderAlgo> maker = makeOperation(op);
   const TopoDS_Shape result = guarded(name, [&] {
-    TopoDS_Shape shape = runOperation(*maker, op, inputs, objects.size(), booleanOptions_.tolerance);
+    TopoDS_Shape shape =
+        runOperation(*maker, op, inputs, objects.size(), booleanOptions_.tolerance);
     for (BooleanInput& in : inputs) {
       in.deleted = maker->IsDeleted(in.shape);
       in.modified = maker->Modified(in.shape);

@@ -365,10 +365,10 @@ namespace {
 
 TEST_F(Cli, AnUnsupportedOutputExtensionIsRefusedBeforeMeshing) {
   fs::path geo = write("sq.geo", kSquare);
-  EXPECT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.vtk").string()}), 1);
-  EXPECT_NE(err_.str().find("'.vtk' format is not supported"), std::string::npos) << err_.str();
+  EXPECT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.stl").string()}), 1);
+  EXPECT_NE(err_.str().find("'.stl' format is not supported"), std::string::npos) << err_.str();
   EXPECT_EQ(err_.str().find("Meshing 1D"), std::string::npos) << err_.str();
-  EXPECT_FALSE(fs::exists(dir_ / "sq.vtk"));
+  EXPECT_FALSE(fs::exists(dir_ / "sq.stl"));
   // An explicit format writes MSH whatever the name.
   EXPECT_EQ(run({geo.string(), "-2", "-format", "msh41", "-o", (dir_ / "sq.mesh41").string()}), 0);
   EXPECT_TRUE(fs::exists(dir_ / "sq.mesh41"));
@@ -390,6 +390,94 @@ TEST_F(Cli, SystemCallsAreRefusedUnlessAllowed) {
       << err_.str();
   ASSERT_EQ(run({geo.string(), "-0", "-allow_system_calls"}), 0) << err_.str();
   EXPECT_TRUE(fs::exists(marker));
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+// A CAD kernel and a CAD file that geomesh does not read: every statement is ignored.
+const char* kForeignCadOnly = R"(SetFactory("Parasolid");
+Merge "wing.x_t";
+Smoother Surface{1} = 3;
+)";
+
+TEST_F(Cli, MeshingAModelThatIgnoredStatementsLeftEmptyIsAnError) {
+  fs::path geo = write("cad.geo", kForeignCadOnly);
+  EXPECT_EQ(run({geo.string(), "-3"}), 1);
+  const std::string err = err_.str();
+  EXPECT_NE(err.find(geo.string() + ":1:1: error: nothing to mesh: 3 statements were ignored as "
+                                    "not supported yet (the first here) and the model has no "
+                                    "point, curve, surface or volume\n"
+                                    "SetFactory(\"Parasolid\");\n^"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("Meshing 1D"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir_ / "cad.msh"));
+  EXPECT_FALSE(fs::exists(dir_ / "cad.msh.partial"));
+  // Evaluating it alone is no error: nothing was asked to be meshed.
+  EXPECT_EQ(run({geo.string()}), 0) << err_.str();
+}
+
+TEST_F(Cli, IgnoredStatementsBesideGeometryStillMesh) {
+  fs::path geo = write("mixed.geo", std::string(kSquare) + "Smoother Surface{1} = 3;\n");
+  EXPECT_EQ(run({geo.string(), "-2"}), 0) << err_.str();
+  EXPECT_NE(err_.str().find("'Smoother Surface' is not supported yet"), std::string::npos)
+      << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "mixed.msh"));
+}
+
+TEST_F(Cli, FormatErrorsListTheTablesNames) {
+  fs::path geo = write("sq.geo", kSquare);
+  EXPECT_EQ(run({geo.string(), "-2", "-format", "nope"}), 1);
+  EXPECT_NE(err_.str().find("unsupported output format 'nope' (supported: msh41, msh4, msh, "
+                            "msh22, msh2"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "sq.msh"));
+  EXPECT_EQ(run({"-help"}), 0);
+  EXPECT_NE(out_.str().find("-format FORMAT         output format: msh41 (msh4, msh), "
+                            "msh22 (msh2)"),
+            std::string::npos)
+      << out_.str();
+}
+
+TEST_F(Cli, MeshFormatOptionAndVersionChooseTheRow) {
+  fs::path geo = write("sq.geo", std::string(kSquare) + "Mesh.MshFileVersion = 2.2;\n");
+  ASSERT_EQ(run({geo.string(), "-2"}), 0) << err_.str();
+  EXPECT_EQ(slurp(dir_ / "sq.msh").rfind("$MeshFormat\n2.2 0 8\n", 0), 0u);
+  fs::path coded = write("coded.geo", std::string(kSquare) + "Mesh.Format = 1;\n");
+  ASSERT_EQ(run({coded.string(), "-2", "-o", (dir_ / "coded.out").string()}), 0) << err_.str();
+  EXPECT_EQ(slurp(dir_ / "coded.out").rfind("$MeshFormat\n4.1 0 8\n", 0), 0u);
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST_F(Cli, WritesVtkByExtensionOrByName) {
+  fs::path geo = write("x.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2", "-o", (dir_ / "x.vtk").string()}), 0) << err_.str();
+  ASSERT_EQ(run({geo.string(), "-2", "-o", (dir_ / "x.msh").string()}), 0) << err_.str();
+  const std::string vtk = slurp(dir_ / "x.vtk");
+  EXPECT_EQ(vtk.rfind("# vtk DataFile Version 2.0\n", 0), 0u) << vtk;
+  EXPECT_NE(vtk.find("\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS "), std::string::npos);
+  // As many points and cells as the MSH file has nodes and elements.
+  std::istringstream nodes(sectionHeader(dir_ / "x.msh", "$Nodes"));
+  std::istringstream elements(sectionHeader(dir_ / "x.msh", "$Elements"));
+  std::size_t blocks = 0, nodeCount = 0, elementCount = 0;
+  nodes >> blocks >> nodeCount;
+  elements >> blocks >> elementCount;
+  EXPECT_NE(vtk.find("\nPOINTS " + std::to_string(nodeCount) + " double\n"), std::string::npos);
+  EXPECT_NE(vtk.find("\nCELL_TYPES " + std::to_string(elementCount) + "\n"), std::string::npos);
+  EXPECT_NE(vtk.find("\nCELL_DATA " + std::to_string(elementCount) + "\n"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "x.vtk.partial"));
+  ASSERT_EQ(run({geo.string(), "-2", "-format", "vtk", "-o", (dir_ / "named.out").string()}), 0);
+  EXPECT_EQ(slurp(dir_ / "named.out"), vtk);
 }
 
 }  // namespace

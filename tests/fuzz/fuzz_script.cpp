@@ -7,7 +7,8 @@
 #include <string>
 
 #include "interpreter/diagnostics.h"
-#include "interpreter/session.h"
+#include "api/session.h"
+#include "interpreter/run_script.h"
 #include "kernel/geometry_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -17,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   session.setSandboxed(true);  // arbitrary scripts must not write files or mesh for minutes
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    session.runText(text, "fuzz.geo");
+    geomesh::runScriptText(session, text, "fuzz.geo");
     session.synchronize();
   } catch (const geomesh::ScriptError&) {
   } catch (const geomesh::ScriptExit&) {

@@ -29,7 +29,7 @@ class IncludeTest : public ::testing::Test {
   std::string runMain() {
     ScriptRun run;
     try {
-      run.session.runFile(path("main.geo"));
+      runScriptFile(run.session, path("main.geo"));
     } catch (const ScriptError& error) {
       return error.what();
     }
@@ -82,7 +82,7 @@ TEST_F(IncludeTest, PrintfRedirectsToFilesBesideTheScript) {
 
 TEST_F(IncludeTest, MissingMainFile) {
   ScriptRun run;
-  EXPECT_THROW(run.session.runFile(path("absent.geo")), ScriptError);
+  EXPECT_THROW(runScriptFile(run.session, path("absent.geo")), ScriptError);
 }
 
 }  // namespace

@@ -154,12 +154,19 @@ TEST_F(ModelCommands, SaveUnrolledGeometry) {
 
 TEST_F(ModelCommands, SaveInAnUnwrittenFormatWarnsAndWritesNothing) {
   ScriptRun run;
-  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.vtk\";\nPrint \"shot.png\";\n");
-  EXPECT_FALSE(fs::exists(dir_ / "out.vtk"));
+  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.stl\";\nPrint \"shot.png\";\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.stl"));
   EXPECT_FALSE(fs::exists(dir_ / "shot.png"));
   ASSERT_EQ(run.log.warnings.size(), 2u);
   EXPECT_NE(run.log.warnings[0].find("cannot write"), std::string::npos);
-  EXPECT_NE(run.log.warnings[0].find("out.vtk"), std::string::npos);
+  EXPECT_NE(run.log.warnings[0].find("out.stl"), std::string::npos);
+}
+
+TEST_F(ModelCommands, SaveWritesEveryFormatOfTheTable) {
+  ScriptRun run;
+  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.vtk\";\n");
+  EXPECT_EQ(read("out.vtk").rfind("# vtk DataFile Version 2.0\n", 0), 0u) << read("out.vtk");
+  EXPECT_NE(read("out.vtk").find("DATASET UNSTRUCTURED_GRID\n"), std::string::npos);
 }
 
 TEST_F(ModelCommands, MergeReadsAScriptLikeInclude) {

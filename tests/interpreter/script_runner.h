@@ -5,7 +5,8 @@
 #include <vector>
 
 #include "interpreter/diagnostics.h"
-#include "interpreter/session.h"
+#include "api/session.h"
+#include "interpreter/run_script.h"
 #include "kernel/messages.h"
 
 namespace geomesh::testing {
@@ -26,12 +27,12 @@ struct ScriptRun {
 
   // Runs `text` as the file "test.geo"; returns what it printed.
   std::string run(const std::string& text, const std::string& name = "test.geo") {
-    session.runText(text, name);
+    runScriptText(session, text, name);
     return out.str();
   }
 };
 
-// What a script prints; throws like Session::runText.
+// What a script prints; throws like runScriptText.
 inline std::string printed(const std::string& text) {
   ScriptRun run;
   return run.run(text);

@@ -18,7 +18,7 @@ std::string readText(const std::string& path) {
 TEST(Tour, PrintsWhatTheReferencePrints) {
   const std::string dir = std::string(GEOMESH_SOURCE_DIR) + "/tests/interpreter/scripts/";
   ScriptRun run;
-  run.session.runFile(dir + "tour.geo");
+  runScriptFile(run.session, dir + "tour.geo");
   EXPECT_EQ(run.out.str(), readText(dir + "tour.expected"));
   EXPECT_TRUE(run.log.warnings.empty());
   run.session.synchronize();
@@ -30,7 +30,7 @@ TEST(Tour, CommandLineOverridesDefineConstant) {
   const std::string dir = std::string(GEOMESH_SOURCE_DIR) + "/tests/interpreter/scripts/";
   ScriptRun run;
   run.session.numberOverrides()["n"] = 2;
-  run.session.runFile(dir + "tour.geo");
+  runScriptFile(run.session, dir + "tour.geo");
   EXPECT_EQ(run.out.str().substr(0, 9), "lc = 0.5\n");
 }
 

@@ -1,13 +1,13 @@
-#include "interpreter/session.h"
+#include "api/session.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
-#include "interpreter/interpreter.h"
-#include "interpreter/value.h"
+#include "io/formats.h"
 #include "mesh/pipeline/generate.h"
-#include "io/msh_reader.h"
+#include "stdlib/clamped_integer.h"
 
 namespace geomesh {
 
@@ -16,12 +16,6 @@ Session::Session(MessageSink& log) : Session(log, std::cout) {}
 Session::Session(MessageSink& log, std::ostream& out) : log_(log), out_(out) {}
 
 Session::~Session() = default;
-
-void Session::runFile(const std::string& path) { runScriptFile(*this, path); }
-
-void Session::runText(const std::string& text, const std::string& fileName) {
-  runScriptText(*this, text, fileName);
-}
 
 void Session::synchronize() {
   if (!meshFromFile_) {
@@ -36,7 +30,12 @@ void Session::synchronize() {
 bool Session::hasGeometry() const { return factories_.hasEntities(); }
 
 void Session::readMesh(const std::string& path) {
-  readMshFile(path, model_, mesh_);
+  const std::string extension = std::filesystem::path(path).extension().string();
+  const MeshFormat* format = findReaderByExtension(extension);
+  if (!format)
+    throw std::runtime_error("cannot read '" + path + "': the '" + extension +
+                             "' format is not supported (read: " + readExtensionList() + ")");
+  readMeshFile(path, *format, model_, mesh_);
   meshFromFile_ = true;
 }
 
@@ -96,6 +95,11 @@ std::optional<SourceLocation> Session::origin(EntityId entity) const {
   auto it = origins_.find(entity);
   if (it == origins_.end()) return std::nullopt;
   return SourceLocation{originFiles_[it->second.file], it->second.line, it->second.column};
+}
+
+void Session::noteIgnoredStatement(const SourceLocation& where) {
+  if (ignoredPlaces_.emplace(where.file, where.line, where.column).second && !firstIgnored_)
+    firstIgnored_ = where;
 }
 
 }  // namespace geomesh

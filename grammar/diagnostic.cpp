@@ -1,4 +1,5 @@
-#include "interpreter/diagnostics.h"
+// Located diagnostics: the text of an error or warning at a place in a script.
+#include "grammar/diagnostic.h"
 
 namespace geomesh {
 

@@ -1,3 +1,4 @@
+// The interpreter's one entry point: running a .geo script in a session.
 #pragma once
 
 #include <string>

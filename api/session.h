@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "grammar/source.h"
@@ -19,7 +21,9 @@
 namespace geomesh {
 
 // Everything one run owns: options, the geometry factories, the model, the mesh, and where
-// messages and script output go. No global state: several sessions can coexist.
+// messages and script output go. No global state: several sessions can coexist. Scripts run
+// in a session through interpreter/run_script.h; the command line and scripts act on it
+// through the functions of api/.
 class Session {
  public:
   explicit Session(MessageSink& log);
@@ -51,10 +55,6 @@ class Session {
   bool sandboxed() const { return sandboxed_; }
   void setSandboxed(bool sandboxed) { sandboxed_ = sandboxed; }
 
-  // Parses and evaluates a script; throws ScriptError (file:line:col diagnostics).
-  void runFile(const std::string& path);
-  void runText(const std::string& text, const std::string& fileName);
-
   // Rebuilds the model from the geometry factories.
   void synchronize();
   // The Mesh.* options, as the generators read them.
@@ -63,9 +63,10 @@ class Session {
   void generate(int dim);
   // Forgets every entity, mesh constraint and mesh element (Delete Model; NewModel;).
   void clearModel();
-  // Replaces the model and the mesh by those of an MSH file (Merge "f.msh"; in a script).
-  // The mesh is then kept as read: meshing leaves it alone, and defining geometry besides
-  // is refused when the model is next synchronized. Throws MshReadError.
+  // Replaces the model and the mesh by those of a mesh file, read by the format its
+  // extension names (Merge "f.msh"; in a script). The mesh is then kept as read: meshing
+  // leaves it alone, and defining geometry besides is refused when the model is next
+  // synchronized. Throws std::runtime_error (MshReadError for a malformed MSH file).
   void readMesh(const std::string& path);
   bool meshFromFile() const { return meshFromFile_; }
   // Whether any geometry factory holds an entity.
@@ -75,6 +76,13 @@ class Session {
   // meshing) can point at the statement. Null when unknown.
   void recordOrigin(EntityId entity, const SourceLocation& where);
   std::optional<SourceLocation> origin(EntityId entity) const;
+
+  // Statements the script contained but that were skipped as not supported yet (with a
+  // warning), each place once, in the order met: meshing a model they left empty is an error
+  // that points at the first.
+  void noteIgnoredStatement(const SourceLocation& where);
+  std::size_t ignoredStatementCount() const { return ignoredPlaces_.size(); }
+  std::optional<SourceLocation> firstIgnoredStatement() const { return firstIgnored_; }
 
  private:
   MessageSink& log_;
@@ -92,6 +100,8 @@ class Session {
   std::map<EntityId, Origin> origins_;
   std::vector<std::string> originFiles_;
   std::uint32_t lastOriginFile_ = 0;
+  std::set<std::tuple<std::string, int, int>> ignoredPlaces_;
+  std::optional<SourceLocation> firstIgnored_;
   bool systemCallsAllowed_ = false;
   bool sandboxed_ = false;
   bool meshFromFile_ = false;

@@ -1,0 +1,170 @@
+// The table of mesh file formats and the lookups over it.
+#include "io/formats.h"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/msh_reader.h"
+#include "io/msh_writer.h"
+
+namespace geomesh {
+
+// Defined in the file of each format.
+void writeVtk(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+
+namespace {
+
+void writeMsh41(std::ostream& out, const Model& model, const Mesh& mesh,
+                const MeshWriteOptions& options) {
+  writeMsh(out, model, mesh, {options.saveAll, options.binary, 4.1});
+}
+
+void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
+                const MeshWriteOptions& options) {
+  writeMsh(out, model, mesh, {options.saveAll, options.binary, 2.2});
+}
+
+// One row per format. Adding a format: its file in io/ defines the writer (and reader), and
+// one row here names them.
+constexpr MeshFormat kFormats[] = {
+    {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh},
+    {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh},
+    {"vtk", ".vtk", 16, 0.0, writeVtk, nullptr},
+};
+
+// The words of a space-separated list.
+std::vector<std::string_view> words(std::string_view list) {
+  std::vector<std::string_view> result;
+  while (!list.empty()) {
+    const std::size_t end = list.find(' ');
+    result.push_back(list.substr(0, end));
+    list = end == std::string_view::npos ? std::string_view() : list.substr(end + 1);
+  }
+  return result;
+}
+
+bool contains(std::string_view list, std::string_view word) {
+  for (std::string_view w : words(list))
+    if (w == word) return true;
+  return false;
+}
+
+// The first row that matches and whose minVersion admits `version`, else the last row that
+// matches (the oldest version).
+template <class Matches>
+const MeshFormat* findVersion(double version, Matches matches) {
+  const MeshFormat* last = nullptr;
+  for (const MeshFormat& format : kFormats) {
+    if (!matches(format)) continue;
+    if (version >= format.minVersion) return &format;
+    last = &format;
+  }
+  return last;
+}
+
+// Items joined by ", ", each once.
+std::string joinedOnce(const std::vector<std::string>& items) {
+  std::string text;
+  std::vector<std::string> seen;
+  for (const std::string& item : items) {
+    if (std::find(seen.begin(), seen.end(), item) != seen.end()) continue;
+    seen.push_back(item);
+    text += (text.empty() ? "" : ", ") + item;
+  }
+  return text;
+}
+
+// The words of one field of the rows that can `use` (write or read), each once.
+template <class Use>
+std::string listed(std::string_view MeshFormat::*field, Use MeshFormat::*use) {
+  std::vector<std::string> items;
+  for (const MeshFormat& format : kFormats)
+    if (format.*use)
+      for (std::string_view word : words(format.*field)) items.emplace_back(word);
+  return joinedOnce(items);
+}
+
+}  // namespace
+
+bool MeshFormat::isNamed(std::string_view name) const { return contains(names, name); }
+
+bool MeshFormat::hasExtension(std::string_view extension) const {
+  return contains(extensions, extension);
+}
+
+std::span<const MeshFormat> meshFormats() { return kFormats; }
+
+const MeshFormat* findFormatByName(std::string_view name) {
+  for (const MeshFormat& format : kFormats)
+    if (format.write && format.isNamed(name)) return &format;
+  return nullptr;
+}
+
+const MeshFormat* findFormatByExtension(std::string_view extension, double version) {
+  return findVersion(version, [&](const MeshFormat& f) {
+    return f.write && f.hasExtension(extension);
+  });
+}
+
+const MeshFormat* findFormatByCode(int code, double version) {
+  return findVersion(version, [&](const MeshFormat& f) { return f.write && f.code == code; });
+}
+
+const MeshFormat* findReaderByExtension(std::string_view extension) {
+  for (const MeshFormat& format : kFormats)
+    if (format.read && format.hasExtension(extension)) return &format;
+  return nullptr;
+}
+
+std::string formatNameList() { return listed(&MeshFormat::names, &MeshFormat::write); }
+
+std::string formatNameGroups() {
+  std::vector<std::string> groups;
+  for (const MeshFormat& format : kFormats) {
+    if (!format.write) continue;
+    const std::vector<std::string_view> names = words(format.names);
+    std::string group(names.front());
+    for (std::size_t i = 1; i < names.size(); ++i)
+      group += (i == 1 ? " (" : ", ") + std::string(names[i]);
+    groups.push_back(names.size() > 1 ? group + ")" : group);
+  }
+  return joinedOnce(groups);
+}
+
+std::string writtenExtensionList() {
+  return listed(&MeshFormat::extensions, &MeshFormat::write);
+}
+
+std::string readExtensionList() { return listed(&MeshFormat::extensions, &MeshFormat::read); }
+
+std::string formatCodeList() {
+  std::vector<std::string> codes;
+  for (const MeshFormat& format : kFormats)
+    if (format.write)
+      codes.push_back(std::to_string(format.code) + " (" +
+                      std::string(words(format.extensions).front().substr(1)) + ")");
+  return joinedOnce(codes);
+}
+
+void writeMeshFile(const std::string& path, const MeshFormat& format, const Model& model,
+                   const Mesh& mesh, const MeshWriteOptions& options) {
+  if (!format.write)
+    throw std::runtime_error("cannot write '" + path + "': " + std::string(format.name()) +
+                             " files are only read");
+  writeFileAtomically(path, [&](std::ostream& out) { format.write(out, model, mesh, options); });
+}
+
+void readMeshFile(const std::string& path, const MeshFormat& format, Model& model, Mesh& mesh) {
+  if (!format.read)
+    throw std::runtime_error("cannot read '" + path + "': " + std::string(format.name()) +
+                             " files are only written");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error("cannot open '" + path + "'");
+  format.read(file, model, mesh, path);
+}
+
+}  // namespace geomesh

@@ -1,0 +1,65 @@
+// The mesh file formats, one row each: every choice of a format (by -format name, file
+// extension or Mesh.Format code) goes through this table.
+#pragma once
+
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// What every writer is told; a format ignores what it cannot express.
+struct MeshWriteOptions {
+  bool saveAll = false;  // Mesh.SaveAll: also save elements outside physical groups
+  bool binary = false;   // Mesh.Binary, for formats with a binary form
+};
+
+using MeshWriter = void (*)(std::ostream& out, const Model& model, const Mesh& mesh,
+                            const MeshWriteOptions& options);
+// Replaces `model` and `mesh` by the file's content; `name` prefixes error messages.
+using MeshReader = void (*)(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+
+struct MeshFormat {
+  std::string_view names;       // accepted by -format, space-separated; the first is its name
+  std::string_view extensions;  // space-separated, with the dot (".msh")
+  int code = 0;                 // Mesh.Format
+  // Rows that share an extension or a code are versions of one format: the row chosen is the
+  // first whose minVersion is at most the version asked for (Mesh.MshFileVersion).
+  double minVersion = 0;
+  MeshWriter write = nullptr;  // null when the format is only read
+  MeshReader read = nullptr;   // null when the format is only written
+
+  std::string_view name() const { return names.substr(0, names.find(' ')); }
+  bool isNamed(std::string_view name) const;
+  bool hasExtension(std::string_view extension) const;
+};
+
+std::span<const MeshFormat> meshFormats();
+
+// Null when no row matches. `version` chooses among the rows sharing an extension or a code.
+const MeshFormat* findFormatByName(std::string_view name);
+const MeshFormat* findFormatByExtension(std::string_view extension, double version);
+const MeshFormat* findFormatByCode(int code, double version);
+// The first format read from files with that extension.
+const MeshFormat* findReaderByExtension(std::string_view extension);
+
+// For messages and help: "msh41, msh4, msh, msh22, msh2"; "msh41 (msh4, msh), msh22 (msh2)";
+// the extensions written (".msh") or read, each once; the codes written ("1 (msh)").
+std::string formatNameList();
+std::string formatNameGroups();
+std::string writtenExtensionList();
+std::string readExtensionList();
+std::string formatCodeList();
+
+// Writes through writeFileAtomically; throws std::runtime_error naming `path`.
+void writeMeshFile(const std::string& path, const MeshFormat& format, const Model& model,
+                   const Mesh& mesh, const MeshWriteOptions& options);
+// Reads with the format's reader; throws std::runtime_error when the file cannot be opened,
+// and the reader's error (MshReadError for MSH) when its content is malformed.
+void readMeshFile(const std::string& path, const MeshFormat& format, Model& model, Mesh& mesh);
+
+}  // namespace geomesh
