@@ -135,7 +135,6 @@ void Interpreter::defineBox(const ast::CommandStmt& command, const SourceLocatio
     made = session_.factory().addBox(clampedInteger<int>(tag), Vec3{xs[0], xs[1], xs[2]},
                                      Vec3{xs[3], xs[4], xs[5]});
   } catch (const UnsupportedOperation&) {
-    session_.noteIgnoredStatement(where);
     warn(where, "'Box' needs SetFactory(\"OpenCASCADE\"); ignored");
     return;
   } catch (const GeometryError& error) {

@@ -163,8 +163,7 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   if (!findReaderByExtension(ext)) {
     session_.noteIgnoredStatement(where);
     warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo, .opt, " +
-                    ".geo_unrolled, " + readExtensionList() +
-                    " and the CAD files .step, .stp, .iges, .igs, .brep); ignored");
+                    ".geo_unrolled and " + readExtensionList() + "); ignored");
     return;
   }
   if (session_.hasGeometry() || session_.meshFromFile()) {

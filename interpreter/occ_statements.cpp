@@ -82,7 +82,7 @@ SolidModeling* Interpreter::solidModeling(const std::string& statement,
                                           const SourceLocation& where) {
   SolidModeling* solids = session_.factory().solidModeling();
   if (!solids) {
-    session_.noteIgnoredStatement(where);  // meshing a model this leaves empty is an error
+    session_.noteIgnoredStatement(where);
     warn(where, "'" + statement + "' needs SetFactory(\"OpenCASCADE\"); ignored");
   }
   return solids;
@@ -220,7 +220,10 @@ std::vector<EntityId> Interpreter::booleanShapes(const std::string& word,
         fail(where, word + ": " + kEntityKinds[e.dim] + " " + std::to_string(std::abs(e.tag)) +
                         " was made by the built-in kernel; OpenCASCADE operations take "
                         "OpenCASCADE entities only");
-  solids->setBooleanTolerance(session_.options().number("Geometry.ToleranceBoolean"));
+  const OptionRegistry& options = session_.options();
+  solids->setBooleanOptions({options.number("Geometry.ToleranceBoolean"),
+                             options.number("Geometry.OCCBooleanSimplify") != 0,
+                             options.number("Geometry.OCCBooleanPreserveNumbering") != 0});
   std::vector<EntityId> result;
   try {
     result = solids->boolean(booleanOperation(word), objects, tools, deleteObjects, deleteTools,

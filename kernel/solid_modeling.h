@@ -58,8 +58,16 @@ class SolidModeling {
     std::vector<EntityId> images;
   };
   virtual const std::vector<Replacement>& lastReplacements() const = 0;
-  // Geometry.ToleranceBoolean.
-  virtual void setBooleanTolerance(double tolerance) = 0;
+  // Geometry.ToleranceBoolean (the fuzzy value, 0: exact), Geometry.OCCBooleanSimplify (a
+  // union merges the faces and edges that lie on one surface or curve) and
+  // Geometry.OCCBooleanPreserveNumbering (a deleted input turned into one shape passes its tag
+  // on).
+  struct BooleanOptions {
+    double tolerance = 0;
+    bool unifyUnion = true;
+    bool preserveNumbering = true;
+  };
+  virtual void setBooleanOptions(const BooleanOptions& options) = 0;
 
   // Extrude{shapes} Using Wire{w}: the entities the sweep along the wire makes.
   virtual std::vector<EntityId> extrudeAlongWire(const std::vector<EntityId>& shapes,

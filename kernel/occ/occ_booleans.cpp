@@ -236,12 +236,14 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
 
   std::unique_ptr<BRepAlgoAPI_BuilderAlgo> maker = makeOperation(op);
   const TopoDS_Shape result = guarded(name, [&] {
-    TopoDS_Shape shape = runOperation(*maker, op, inputs, objects.size(), booleanTolerance_);
+    TopoDS_Shape shape =
+        runOperation(*maker, op, inputs, objects.size(), booleanOptions_.tolerance);
     for (BooleanInput& in : inputs) {
       in.deleted = maker->IsDeleted(in.shape);
       in.modified = maker->Modified(in.shape);
     }
-    return op == BooleanOperation::Union ? unify(shape, inputs) : shape;
+    return op == BooleanOperation::Union && booleanOptions_.unifyUnion ? unify(shape, inputs)
+                                                                        : shape;
   });
 
   int taggedDim = 0;
@@ -261,6 +263,7 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   // A deleted input turned into a single shape of its dimension passes its tag on (to that
   // shape alone: its sub-shapes are numbered with the rest of the result).
   for (const BooleanInput& in : inputs) {
+    if (!booleanOptions_.preserveNumbering) break;
     if (!in.remove || in.deleted || in.modified.Extent() != 1) continue;
     const TopoDS_Shape& image = in.modified.First();
     if (shapeDimension(image) == in.id.dim && !shapes_->isBound(in.id.dim, image) &&
@@ -270,6 +273,18 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   std::vector<EntityId> out = bindResult(*shapes_, result);
   replacements_ = replacementsOf(*shapes_, inputs);
   return out;
+}
+
+// Coherence: the entities of the highest dimension present, fragmented together, as the
+// reference makes coincident entities one (lower-dimensional ones stay as they are).
+void OccFactory::coherence() {
+  for (int dim = 3; dim >= 0; --dim) {
+    if (shapes_->byTag[dim].empty()) continue;
+    std::vector<EntityId> all;
+    for (const auto& entry : shapes_->byTag[dim]) all.push_back({dim, entry.first});
+    if (all.size() > 1) boolean(BooleanOperation::Fragments, all, {}, true, true);
+    return;
+  }
 }
 
 }  // namespace geomesh

@@ -133,11 +133,14 @@ std::optional<ExtrusionRecord> extrusionOf(const Extrusions& extrusions, EntityI
 }  // namespace
 
 void OccFactory::synchronize(Model& model) const {
-  exportPoints(*shapes_, meshSizes_, model);
-  exportCurves(*shapes_, shapes_->extrusions, model);
-  exportSurfaces(*shapes_, shapes_->extrusions, model);
-  exportVolumes(*shapes_, shapes_->extrusions, model);
-  applyConstraints(*shapes_, model);
+  guarded("synchronizing the OpenCASCADE model", [&] {
+    exportPoints(*shapes_, meshSizes_, model);
+    exportCurves(*shapes_, shapes_->extrusions, model);
+    exportSurfaces(*shapes_, shapes_->extrusions, model);
+    exportVolumes(*shapes_, shapes_->extrusions, model);
+    applyConstraints(*shapes_, model);
+    return 0;
+  });
 }
 
 namespace {

@@ -89,8 +89,9 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   std::vector<EntityId> boolean(BooleanOperation operation, const std::vector<EntityId>& objects,
                                 const std::vector<EntityId>& tools, bool deleteObjects,
                                 bool deleteTools, int tag = -1) override;
-  // Geometry.ToleranceBoolean: the fuzzy value of Booleans (0: exact).
-  void setBooleanTolerance(double tolerance) override { booleanTolerance_ = tolerance; }
+  // Coherence: the entities of the highest dimension present, fragmented together.
+  void coherence() override;
+  void setBooleanOptions(const BooleanOptions& options) override { booleanOptions_ = options; }
   const std::vector<Replacement>& lastReplacements() const override { return replacements_; }
 
   // Extrude{..}{shapes} (kernel/occ/occ_extrude.cpp): a translation or a rotation (not a
@@ -163,7 +164,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
  private:
   std::unique_ptr<OccShapes> shapes_;
   std::map<int, double> meshSizes_;  // at points
-  double booleanTolerance_ = 0;
+  BooleanOptions booleanOptions_;
   std::vector<Replacement> replacements_;  // of the last Boolean
 
   int primitiveTag(int dim, int tag, const char* what) const;

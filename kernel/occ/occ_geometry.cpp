@@ -8,6 +8,7 @@
 #include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_Surface.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -99,10 +100,13 @@ CurvesOnFace curvesOnFace(const TopoDS_Face& face, const OccEdgeTag& edgeTag) {
   if (!edgeTag) return curves;
   for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-    Standard_Real first = 0, last = 0;
-    const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-    if (curve.IsNull()) continue;
-    curves.try_emplace(edgeTag(edge), curve, first, last);
+    try {
+      Standard_Real first = 0, last = 0;
+      const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+      if (!curve.IsNull()) curves.try_emplace(edgeTag(edge), curve, first, last);
+    } catch (const Standard_Failure&) {
+      // no curve on the face: the mesher projects this edge's nodes instead
+    }
   }
   return curves;
 }
@@ -130,8 +134,12 @@ class OccSurface final : public SurfaceGeometry {
     auto it = curves_.find(signedCurve);
     if (it == curves_.end()) it = curves_.find(-signedCurve);
     if (it == curves_.end()) return std::nullopt;
-    const gp_Pnt2d p = it->second.Value(t);
-    return Vec2{p.X(), p.Y()};
+    try {
+      const gp_Pnt2d p = it->second.Value(t);
+      return Vec2{p.X(), p.Y()};
+    } catch (const Standard_Failure&) {
+      return std::nullopt;
+    }
   }
 
  private:
@@ -144,13 +152,17 @@ class OccSurface final : public SurfaceGeometry {
 // The closest point of the underlying surface, searched within the face's parameter bounds;
 // when the search fails (a degenerate input) the bounds' centre is returned.
 Vec2 OccSurface::project(Vec3 p) const {
-  GeomAPI_ProjectPointOnSurf projection(gp_Pnt(p.x, p.y, p.z), geom_, bounds_.u.min,
-                                        bounds_.u.max, bounds_.v.min, bounds_.v.max);
-  if (projection.NbPoints() == 0)
-    return {(bounds_.u.min + bounds_.u.max) / 2, (bounds_.v.min + bounds_.v.max) / 2};
-  Standard_Real u = 0, v = 0;
-  projection.LowerDistanceParameters(u, v);
-  return {u, v};
+  const Vec2 centre{(bounds_.u.min + bounds_.u.max) / 2, (bounds_.v.min + bounds_.v.max) / 2};
+  try {
+    GeomAPI_ProjectPointOnSurf projection(gp_Pnt(p.x, p.y, p.z), geom_, bounds_.u.min,
+                                          bounds_.u.max, bounds_.v.min, bounds_.v.max);
+    if (projection.NbPoints() == 0) return centre;
+    Standard_Real u = 0, v = 0;
+    projection.LowerDistanceParameters(u, v);
+    return {u, v};
+  } catch (const Standard_Failure&) {  // a degenerate surface: as when no point is found
+    return centre;
+  }
 }
 
 }  // namespace

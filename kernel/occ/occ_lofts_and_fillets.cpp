@@ -11,6 +11,7 @@
 #include <TopoDS_Wire.hxx>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "kernel/geometry_error.h"
@@ -78,6 +79,25 @@ std::vector<EntityId> replaceVolumes(OccShapes& shapes, const std::vector<int>& 
   return out;
 }
 
+// "0.6", or "0.1, 0.2": the sizes given, as a script writes them.
+std::string numberText(const std::vector<double>& values) {
+  std::string text;
+  for (double v : values) {
+    std::ostringstream one;
+    one << v;
+    text += (text.empty() ? "" : ", ") + one.str();
+  }
+  return text;
+}
+
+// "curve 13", "curves 1, 2".
+std::string curveList(const std::vector<int>& curves) {
+  std::string text = curves.size() == 1 ? "curve " : "curves ";
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    text += (i ? ", " : "") + std::to_string(std::abs(curves[i]));
+  return text;
+}
+
 std::vector<TopoDS_Edge> edgesOf(const OccShapes& shapes, const TopoDS_Shape& volume,
                                  const std::vector<int>& curves) {
   std::vector<TopoDS_Edge> edges;
@@ -114,7 +134,8 @@ std::vector<EntityId> OccFactory::fillet(const std::vector<int>& volumes,
     }
     maker.Build();
     if (!maker.IsDone())
-      throw GeometryError(what + ": OpenCASCADE could not round these curves (radius too large?)");
+      throw GeometryError(what + ": radius " + numberText(radii) + " is too large for " +
+                          curveList(curves) + " (OpenCASCADE could not round them)");
     return maker.Shape();
   });
 }
@@ -148,8 +169,8 @@ std::vector<EntityId> OccFactory::chamfer(const std::vector<int>& volumes,
     }
     maker.Build();
     if (!maker.IsDone())
-      throw GeometryError(what +
-                          ": OpenCASCADE could not bevel these curves (distance too large?)");
+      throw GeometryError(what + ": distance " + numberText(distances) + " is too large for " +
+                          curveList(curves) + " (OpenCASCADE could not bevel them)");
     return maker.Shape();
   });
 }

@@ -17,7 +17,7 @@ TEST(IgnoredStatements, UnsupportedStatementsAreRecordedInOrder) {
 TEST(IgnoredStatements, UnsupportedShapeOperationsAndMergesCount) {
   ScriptRun run;
   run.run("v() = BooleanUnion{ Volume{1}; Delete; }{ Volume{2}; Delete; };\n"
-          "Merge \"wing.x_t\";\n");
+          "Merge \"part.dxf\";\n");  // STEP files are read now (occ_statements_test)
   EXPECT_EQ(run.session.ignoredStatementCount(), 2u);
   EXPECT_EQ(run.session.firstIgnoredStatement()->line, 1);
 }

@@ -117,22 +117,40 @@ TEST(SetFactory, BoundaryOfABox) {
             (std::vector<int>{1, 2, 3, 4, 5, 6}));
 }
 
-// Points and lines are the OpenCASCADE factory's now; Coherence is not yet.
+// The older form of Periodic Surface is not the OpenCASCADE factory's yet: on surfaces of the
+// built-in kernel, that kernel carries it out, saying so once.
 TEST(SetFactory, BuiltInKernelCarriesOutWhatOpenCascadeCannotYetAndSaysSoOnce) {
   ScriptRun run;
-  run.run("SetFactory(\"OpenCASCADE\");\n"
-          "Point(1) = {0, 0, 0};\n"
-          "Point(2) = {1, 0, 0};\n"
-          "Line(1) = {1, 2};\n"
-          "Coherence;\n"
-          "Coherence;\n");
+  run.run("For s In {0:1}\n"
+          "  For i In {0:3}\n"
+          "    Point(4 * s + i + 1) = {2 * s + (i == 1 || i == 2), (i >= 2), 0};\n"
+          "  EndFor\n"
+          "  For i In {0:3}\n"
+          "    Line(4 * s + i + 1) = {4 * s + i + 1, 4 * s + (i + 1) % 4 + 1};\n"
+          "  EndFor\n"
+          "  Curve Loop(s + 1) = {4 * s + 1 : 4 * s + 4};\n"
+          "  Plane Surface(s + 1) = {s + 1};\n"
+          "EndFor\n"
+          "SetFactory(\"OpenCASCADE\");\n"
+          "Periodic Surface 2 {5, 6, 7, 8} = 1 {1, 2, 3, 4};\n"
+          "Periodic Surface 2 {5, 6, 7, 8} = 1 {1, 2, 3, 4};\n"
+          "Box(1) = {5, 0, 0, 1, 1, 1};\n");
   ASSERT_EQ(run.log.warnings.size(), 1u);
   EXPECT_EQ(run.log.warnings[0],
-            "test.geo:5:1: warning: 'Coherence' is not supported by the OpenCASCADE factory yet; "
+            "test.geo:12:1: warning: 'Periodic' is not supported by the OpenCASCADE factory yet; "
             "the built-in kernel carries it out");
   run.session.synchronize();
-  EXPECT_EQ(run.session.model().points().size(), 2u);
-  EXPECT_EQ(run.session.model().curves().size(), 1u);
+  ASSERT_TRUE(run.session.model().surface(2)->periodic.has_value());
+  EXPECT_EQ(run.session.model().surface(2)->periodic->master, 1);
+  EXPECT_EQ(run.session.model().volumes().size(), 1u);
+}
+
+// Coherence on the OpenCASCADE model fragments its volumes, as the reference does.
+TEST(SetFactory, CoherenceGluesOpenCascadeVolumes) {
+  EXPECT_EQ(printed("SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+                    "Box(2) = {1, 0, 0, 1, 1, 1};\nCoherence;\n"
+                    "s() = Surface{:};\nv() = Volume{:};\nPrintf(\"%g %g\", #s(), #v());\n"),
+            "11 2\n");
 }
 
 TEST(SetFactory, BothFactoriesShareOneModel) {
