@@ -17,6 +17,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include <map>
+#include <mutex>
 
 namespace geomesh {
 
@@ -147,6 +148,11 @@ class OccSurface final : public SurfaceGeometry {
   Handle(Geom_Surface) geom_;  // with the face's location applied
   ParamBox bounds_;
   CurvesOnFace curves_;
+  // The projector samples the surface on a grid when it is set up: done once per surface, not
+  // once per projected point. Checks and meshers project many points on the same surface.
+  mutable std::mutex projectorMutex_;
+  mutable GeomAPI_ProjectPointOnSurf projector_;
+  mutable bool projectorReady_ = false;
 };
 
 // The closest point of the underlying surface, searched within the face's parameter bounds;
@@ -154,11 +160,15 @@ class OccSurface final : public SurfaceGeometry {
 Vec2 OccSurface::project(Vec3 p) const {
   const Vec2 centre{(bounds_.u.min + bounds_.u.max) / 2, (bounds_.v.min + bounds_.v.max) / 2};
   try {
-    GeomAPI_ProjectPointOnSurf projection(gp_Pnt(p.x, p.y, p.z), geom_, bounds_.u.min,
-                                          bounds_.u.max, bounds_.v.min, bounds_.v.max);
-    if (projection.NbPoints() == 0) return centre;
+    const std::lock_guard<std::mutex> lock(projectorMutex_);
+    if (!projectorReady_) {
+      projector_.Init(geom_, bounds_.u.min, bounds_.u.max, bounds_.v.min, bounds_.v.max);
+      projectorReady_ = true;
+    }
+    projector_.Perform(gp_Pnt(p.x, p.y, p.z));
+    if (!projector_.IsDone() || projector_.NbPoints() == 0) return centre;
     Standard_Real u = 0, v = 0;
-    projection.LowerDistanceParameters(u, v);
+    projector_.LowerDistanceParameters(u, v);
     return {u, v};
   } catch (const Standard_Failure&) {  // a degenerate surface: as when no point is found
     return centre;
