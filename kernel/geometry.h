@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "kernel/vec3.h"
 
 namespace geomesh {
@@ -31,6 +33,9 @@ class CurveGeometry {
   // default, the length of the parameter range, is that angle for a curve parametrized by
   // its angle.
   virtual double arcAngle() const { return range().max - range().min; }
+  // Whether the curve is a single point of space over its whole range (a CAD model's edge at
+  // the pole of a sphere or the apex of a cone): its mesh is its one vertex, no segment.
+  virtual bool isDegenerate() const { return false; }
 };
 
 struct SurfaceDerivatives {
@@ -51,6 +56,15 @@ class SurfaceGeometry {
   virtual Vec2 project(Vec3 p) const = 0;
   virtual SurfaceKind kind() const { return SurfaceKind::Other; }
   virtual bool isPlane() const { return kind() == SurfaceKind::Plane; }
+  // Where the point at parameter t of the boundary curve `signedCurve` (as it appears in one
+  // of the surface's loops, negative when used against its direction) lies in the parameter
+  // plane. A seam of a periodic surface appears twice, once per direction: each sign gives its
+  // side of the parameter box. A degenerate curve (a pole) gives a segment. nullopt when the
+  // surface does not know the curve: the point is then projected.
+  virtual std::optional<Vec2> curveParameters(int signedCurve, double t) const {
+    (void)signedCurve, (void)t;
+    return std::nullopt;
+  }
 };
 
 }  // namespace geomesh

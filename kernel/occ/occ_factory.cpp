@@ -177,7 +177,9 @@ std::vector<int> wireLoop(const OccShapes& s, const TopoDS_Face& face,
 void exportSurfaces(const OccShapes& s, const Extrusions& extrusions, Model& model) {
   for (const auto& [tag, shape] : s.byTag[2]) {
     const TopoDS_Face face = TopoDS::Face(shape.Oriented(TopAbs_FORWARD));
-    ModelSurface surface{tag, {}, makeOccSurface(face), {}, {}, extrusionOf(extrusions, {2, tag})};
+    const auto edgeTag = [&s](const TopoDS_Edge& e) { return signedTag(s.tagOf(1, e), e); };
+    ModelSurface surface{tag, {}, makeOccSurface(face, edgeTag), {}, {},
+                         extrusionOf(extrusions, {2, tag})};
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
     surface.loops.push_back(wireLoop(s, face, outer));
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())

@@ -4,11 +4,19 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_Surface.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+
+#include <map>
 
 namespace geomesh {
 
@@ -65,10 +73,48 @@ class OccCurve final : public CurveGeometry {
   BRepAdaptor_Curve curve_;
 };
 
+// An edge collapsed to a point (BRep_Tool::Degenerated): its vertex over the edge's range.
+class DegenerateOccCurve final : public CurveGeometry {
+ public:
+  explicit DegenerateOccCurve(const TopoDS_Edge& edge) {
+    BRep_Tool::Range(edge, range_.min, range_.max);
+    point_ = toVec3(BRep_Tool::Pnt(TopExp::FirstVertex(edge)).XYZ());
+  }
+
+  Interval range() const override { return range_; }
+  Vec3 point(double) const override { return point_; }
+  Vec3 firstDerivative(double) const override { return {}; }
+  Vec3 secondDerivative(double) const override { return {}; }
+  bool isDegenerate() const override { return true; }
+
+ private:
+  Interval range_;
+  Vec3 point_;
+};
+
+// The curves on a face of its edges, by signed curve tag.
+using CurvesOnFace = std::map<int, Geom2dAdaptor_Curve>;
+
+CurvesOnFace curvesOnFace(const TopoDS_Face& face, const OccEdgeTag& edgeTag) {
+  CurvesOnFace curves;
+  if (!edgeTag) return curves;
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    try {
+      Standard_Real first = 0, last = 0;
+      const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+      if (!curve.IsNull()) curves.try_emplace(edgeTag(edge), curve, first, last);
+    } catch (const Standard_Failure&) {
+      // no curve on the face: the mesher projects this edge's nodes instead
+    }
+  }
+  return curves;
+}
+
 class OccSurface final : public SurfaceGeometry {
  public:
-  explicit OccSurface(const TopoDS_Face& face)
-      : surface_(face), geom_(BRep_Tool::Surface(face)) {
+  OccSurface(const TopoDS_Face& face, const OccEdgeTag& edgeTag)
+      : surface_(face), geom_(BRep_Tool::Surface(face)), curves_(curvesOnFace(face, edgeTag)) {
     BRepTools::UVBounds(face, bounds_.u.min, bounds_.u.max, bounds_.v.min, bounds_.v.max);
   }
 
@@ -82,11 +128,25 @@ class OccSurface final : public SurfaceGeometry {
   }
   Vec2 project(Vec3 p) const override;
   SurfaceKind kind() const override { return surfaceKind(surface_.GetType()); }
+  // An edge used once answers for both signs; a seam, used in both directions, has a curve
+  // on the face for each.
+  std::optional<Vec2> curveParameters(int signedCurve, double t) const override {
+    auto it = curves_.find(signedCurve);
+    if (it == curves_.end()) it = curves_.find(-signedCurve);
+    if (it == curves_.end()) return std::nullopt;
+    try {
+      const gp_Pnt2d p = it->second.Value(t);
+      return Vec2{p.X(), p.Y()};
+    } catch (const Standard_Failure&) {
+      return std::nullopt;
+    }
+  }
 
  private:
   BRepAdaptor_Surface surface_;
   Handle(Geom_Surface) geom_;  // with the face's location applied
   ParamBox bounds_;
+  CurvesOnFace curves_;
 };
 
 // The closest point of the underlying surface, searched within the face's parameter bounds;
@@ -108,11 +168,13 @@ Vec2 OccSurface::project(Vec3 p) const {
 }  // namespace
 
 std::shared_ptr<const CurveGeometry> makeOccCurve(const TopoDS_Edge& edge) {
+  if (BRep_Tool::Degenerated(edge)) return std::make_shared<DegenerateOccCurve>(edge);
   return std::make_shared<OccCurve>(edge);
 }
 
-std::shared_ptr<const SurfaceGeometry> makeOccSurface(const TopoDS_Face& face) {
-  return std::make_shared<OccSurface>(face);
+std::shared_ptr<const SurfaceGeometry> makeOccSurface(const TopoDS_Face& face,
+                                                      const OccEdgeTag& edgeTag) {
+  return std::make_shared<OccSurface>(face, edgeTag);
 }
 
 }  // namespace geomesh

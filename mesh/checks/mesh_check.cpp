@@ -137,6 +137,8 @@ class Checker {
     const EntityMesh* em = mesh_.find(id);
     if (!em) return;  // not meshed (dimension 0 only)
     const ElementBlock* lines = em->findBlock(ElementType::Line2);
+    const bool degenerate = curve.geometry && curve.geometry->isDegenerate();
+    if (degenerate && (!lines || lines->size() == 0) && em->nodes.empty()) return;  // a pole
     if (!lines || lines->size() == 0) return problem(id, "has no line elements");
     // End points of tag 0 are unknown: the curve was read from a file without topology.
     if (curve.startPoint != 0 || curve.endPoint != 0) {

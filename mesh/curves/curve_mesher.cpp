@@ -119,9 +119,11 @@ class SizeIntegral {
 };
 
 // Bounds on the size besides the end points' sizes, at SizeIntegral's sample arc lengths: the
-// background field and the curvature bound (SizeRules::curvatureSize). Empty when neither applies.
-std::vector<double> sampleSizeBounds(const ModelCurve& curve, const ArcLengthTable& arc,
-                                     const SizeRules& rules, const SizeFields* fields) {
+// background field and the curvature bound (SizeRules::curvatureSize) of the curve and of the
+// surfaces it bounds, where they place it. Empty when neither applies.
+std::vector<double> sampleSizeBounds(const Model& model, const ModelCurve& curve,
+                                     const ArcLengthTable& arc, const SizeRules& rules,
+                                     const SizeFields* fields) {
   const bool field = fields && fields->hasBackground();
   if (!field && !(rules.elementsPerTwoPi > 0)) return {};
   const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
@@ -139,6 +141,15 @@ std::vector<double> sampleSizeBounds(const ModelCurve& curve, const ArcLengthTab
   if (field) fields->evaluate(points, {1, curve.tag}, sizes);
   for (std::size_t k = 0; k < sizes.size(); ++k)
     sizes[k] = std::min(sizes[k], rules.curvatureSize(curveCurvature(*curve.geometry, ts[k])));
+  if (!(rules.elementsPerTwoPi > 0)) return sizes;
+  for (int tag : model.upward({1, curve.tag})) {
+    const ModelSurface* surface = model.surface(tag);
+    if (!surface || !surface->geometry) continue;
+    for (std::size_t k = 0; k < sizes.size(); ++k)
+      if (const auto uv = surface->geometry->curveParameters(curve.tag, ts[k]))
+        sizes[k] =
+            std::min(sizes[k], rules.curvatureSize(surfaceCurvature(*surface->geometry, *uv)));
+  }
   return sizes;
 }
 
@@ -203,6 +214,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   em.nodes.clear();
   em.parametric.clear();
   em.blocks.clear();
+  if (g.isDegenerate()) return;  // its mesh is its one vertex
   const auto& transfinite = model.meshConstraints().transfiniteCurves;
   if (const auto it = transfinite.find(curve.tag); it != transfinite.end()) {
     placeTransfinite(curve, arc, transfiniteFractions(it->second), mesh);
@@ -210,7 +222,7 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
   const SizeIntegral integral(arc.length(), startSize, endSize, rules,
-                              sampleSizeBounds(curve, arc, rules, fields));
+                              sampleSizeBounds(model, curve, arc, rules, fields));
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
   constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
   if (integral.total() > kMaxSegments)
@@ -242,6 +254,20 @@ std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int 
   chain.push_back(pointNode(mesh, curve->endPoint));
   if (signedTag < 0) std::reverse(chain.begin(), chain.end());
   return chain;
+}
+
+std::vector<double> curveNodeParameters(const Model& model, const Mesh& mesh, int signedTag) {
+  const int tag = std::abs(signedTag);
+  const ModelCurve* curve = model.curve(tag);
+  const EntityMesh* em = mesh.find({1, tag});
+  if (!curve || !em || !curve->geometry) throw MeshError({1, tag}, "curve has no mesh");
+  if (em->parametric.size() != em->nodes.size()) return {};
+  const Interval range = curve->geometry->range();
+  std::vector<double> ts{range.min};
+  ts.insert(ts.end(), em->parametric.begin(), em->parametric.end());
+  ts.push_back(range.max);
+  if (signedTag < 0) std::reverse(ts.begin(), ts.end());
+  return ts;
 }
 
 }  // namespace geomesh

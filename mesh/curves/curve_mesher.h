@@ -25,6 +25,11 @@ NodeIndex pointNode(const Mesh& mesh, int pointTag);
 
 // The nodes of a meshed curve from start to end (both end points included), reversed when
 // `signedTag` is negative.
+// A degenerate curve (CurveGeometry::isDegenerate) has no segment: its chain is its vertex twice.
 std::vector<NodeIndex> curveNodeChain(const Model& model, const Mesh& mesh, int signedTag);
+
+// The curve parameters of curveNodeChain's nodes, in the same order; empty when the curve's
+// nodes have none (a mesh made by copy rather than on the curve).
+std::vector<double> curveNodeParameters(const Model& model, const Mesh& mesh, int signedTag);
 
 }  // namespace geomesh

@@ -69,6 +69,38 @@ double curveCurvature(const CurveGeometry& g, double t) {
   return norm(cross(d1, g.secondDerivative(t))) / (speed * speed * speed);
 }
 
+namespace {
+
+// The unit normal at uv; zero where du x dv vanishes.
+Vec3 unitNormal(const SurfaceGeometry& g, Vec2 uv) {
+  const SurfaceDerivatives d = g.firstDerivatives(uv);
+  const Vec3 n = cross(d.du, d.dv);
+  const double length = norm(n);
+  return length > 0 ? (1 / length) * n : Vec3{};
+}
+
+}  // namespace
+
+// Principal curvatures are the roots k of det(II - k I) = 0, with the first fundamental form
+// I = (E, F, G) and the second II = (L, M, N) = -(n_u.x_u, (n_u.x_v + n_v.x_u) / 2, n_v.x_v).
+double surfaceCurvature(const SurfaceGeometry& g, Vec2 uv) {
+  const ParamBox box = g.bounds();
+  const double hu = 1e-5 * std::max(1.0, std::abs(box.u.max - box.u.min));
+  const double hv = 1e-5 * std::max(1.0, std::abs(box.v.max - box.v.min));
+  if (!std::isfinite(hu) || !std::isfinite(hv)) return 0;
+  const SurfaceDerivatives d = g.firstDerivatives(uv);
+  const Vec3 nu = (0.5 / hu) * (unitNormal(g, {uv.u + hu, uv.v}) - unitNormal(g, {uv.u - hu, uv.v}));
+  const Vec3 nv = (0.5 / hv) * (unitNormal(g, {uv.u, uv.v + hv}) - unitNormal(g, {uv.u, uv.v - hv}));
+  const double e = dot(d.du, d.du), f = dot(d.du, d.dv), gg = dot(d.dv, d.dv);
+  const double l = -dot(nu, d.du), m = -0.5 * (dot(nu, d.dv) + dot(nv, d.du)), n = -dot(nv, d.dv);
+  const double area = e * gg - f * f;
+  if (!(area > 1e-20 * (e * gg)) || !(e > 0) || !(gg > 0)) return 0;
+  const double gauss = (l * n - m * m) / area;
+  const double mean = (e * n + gg * l - 2 * f * m) / (2 * area);
+  const double k = std::abs(mean) + std::sqrt(std::max(0.0, mean * mean - gauss));
+  return std::isfinite(k) ? k : 0;
+}
+
 SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
   SizeRules rules;
   rules.sizeMin = options.sizeMin;

@@ -49,4 +49,8 @@ struct SizeRules {
 // The curvature of a curve at parameter t: |c' x c''| / |c'|^3.
 double curveCurvature(const CurveGeometry& g, double t);
 
+// The largest principal curvature (in absolute value) of a surface at uv, from the change of
+// its unit normal over a small parameter step; 0 where the normal is undefined (a pole).
+double surfaceCurvature(const SurfaceGeometry& g, Vec2 uv);
+
 }  // namespace geomesh

@@ -1,7 +1,9 @@
 #include "mesh/surfaces/surface_mesher.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <string>
 #include <unordered_map>
@@ -15,41 +17,194 @@
 namespace geomesh {
 namespace {
 
-// The nodes and constrained segments a surface's triangulation starts from, numbered locally.
+double distance(Vec2 a, Vec2 b) { return std::hypot(a.u - b.u, a.v - b.v); }
+
+// The points and constrained segments a surface's triangulation starts from, numbered
+// locally. A point is a mesh node at a place of the parameter plane: a node on a seam has a
+// point on each side, a pole one per piece of its segment.
 struct SurfaceInput {
-  std::vector<NodeIndex> nodes;
+  std::vector<NodeIndex> nodes;          // the node of each point
+  std::vector<std::optional<Vec2>> uv;   // its parameters, when the surface gave them
   std::vector<ConstrainedSegment> segments;
   std::vector<int> segmentCurve;  // tag of the curve each segment comes from
-  std::unordered_map<NodeIndex, std::uint32_t> localOf;
+  std::unordered_map<NodeIndex, std::vector<std::uint32_t>> pointsOf;
+  std::vector<Vec2> seeds;  // free points around poles (parameters), numbered after the points
+  double seedSize = 0;      // their target size
+  double tolerance = 0;  // parameter distance under which two places of a node are one
 
-  std::uint32_t local(NodeIndex n) {
-    const auto [it, inserted] = localOf.try_emplace(n, static_cast<std::uint32_t>(nodes.size()));
-    if (inserted) nodes.push_back(n);
-    return it->second;
+  // The point of node n at `place`: an existing one of n at the same place (or any one of n
+  // when either place is unknown), else a new one.
+  std::uint32_t local(NodeIndex n, std::optional<Vec2> place = std::nullopt) {
+    std::vector<std::uint32_t>& points = pointsOf[n];
+    for (std::uint32_t k : points)
+      if (!place || !uv[k] || distance(*place, *uv[k]) <= tolerance) return k;
+    const auto k = static_cast<std::uint32_t>(nodes.size());
+    nodes.push_back(n);
+    uv.push_back(place);
+    points.push_back(k);
+    return k;
   }
-  void addCurve(const Model& model, const Mesh& mesh, int signedTag, EdgeKind kind) {
-    const std::vector<NodeIndex> chain = curveNodeChain(model, mesh, signedTag);
-    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
-      segments.push_back({local(chain[k]), local(chain[k + 1]), kind});
-      segmentCurve.push_back(std::abs(signedTag));
+  // Adds the chain's segments and returns its first and last points. `start` and `end`, when
+  // given, are the points where it meets the previous and the next curve of its loop: there,
+  // the curves' places in the parameter plane are one, even where their curves on the surface
+  // differ by the CAD model's tolerance.
+  std::pair<std::uint32_t, std::uint32_t> addChain(const std::vector<NodeIndex>& chain,
+                                                   const std::vector<std::optional<Vec2>>& at,
+                                                   int curve, EdgeKind kind,
+                                                   std::optional<std::uint32_t> start = {},
+                                                   std::optional<std::uint32_t> end = {}) {
+    auto pointAt = [&](std::size_t k, std::optional<std::uint32_t> given) {
+      return given && nodes[*given] == chain[k] ? *given : local(chain[k], at[k]);
+    };
+    const std::uint32_t first = pointAt(0, start);
+    std::uint32_t previous = first;
+    for (std::size_t k = 1; k < chain.size(); ++k) {
+      const std::uint32_t next =
+          pointAt(k, k + 1 == chain.size() ? end : std::optional<std::uint32_t>());
+      segments.push_back({previous, next, kind});
+      segmentCurve.push_back(curve);
+      previous = next;
     }
+    return {first, previous};
   }
 };
 
+// Where the surface puts the chain's nodes, when it knows the curve; unknown places otherwise.
+std::vector<std::optional<Vec2>> chainPlaces(const Model& model, const Mesh& mesh,
+                                             const SurfaceGeometry& g, int signedTag,
+                                             std::size_t count) {
+  std::vector<std::optional<Vec2>> at(count);
+  const std::vector<double> ts = curveNodeParameters(model, mesh, signedTag);
+  if (ts.size() != count || !g.curveParameters(signedTag, ts.front())) return at;
+  for (std::size_t k = 0; k < count; ++k) at[k] = g.curveParameters(signedTag, ts[k]);
+  return at;
+}
+
+bool isDegenerate(const Model& model, int signedTag) {
+  const ModelCurve* curve = model.curve(std::abs(signedTag));
+  return curve && curve->geometry && curve->geometry->isDegenerate();
+}
+
+// A curve of a loop as its nodes and their places; a pole's places are the ends of its segment.
+struct LoopPiece {
+  int curve;  // signed
+  std::vector<NodeIndex> chain;
+  std::vector<std::optional<Vec2>> at;
+  bool pole;
+};
+
+LoopPiece loopPiece(const Model& model, const Mesh& mesh, const SurfaceGeometry& g, int curve) {
+  LoopPiece piece{curve, curveNodeChain(model, mesh, curve), {}, false};
+  piece.at = chainPlaces(model, mesh, g, curve, piece.chain.size());
+  piece.pole = isDegenerate(model, curve) && piece.at.front() && piece.at.back();
+  return piece;
+}
+
+// The mean length in space of the pieces' segments (poles have none).
+double meanSegmentLength(const std::vector<std::vector<LoopPiece>>& loops, const Mesh& mesh) {
+  double total = 0;
+  int count = 0;
+  for (const std::vector<LoopPiece>& loop : loops)
+    for (const LoopPiece& piece : loop)
+      for (std::size_t k = 0; k + 1 < piece.chain.size(); ++k) {
+        const double length = distance(mesh.node(piece.chain[k]), mesh.node(piece.chain[k + 1]));
+        if (length > 0) total += length, ++count;
+      }
+  return count > 0 ? total / count : 0;
+}
+
+// A ring of free points `size` away from a pole's segment, at least six per turn, so that
+// the triangles around the pole each span a small part of the turn: without them a coarse
+// mesh may close the turn with two triangles, flat in space (at a cone's apex).
+void addPoleRing(SurfaceInput& in, const SurfaceGeometry& g, Vec2 a, Vec2 b, double size) {
+  const Vec2 along{b.u - a.u, b.v - a.v};
+  const double length = std::hypot(along.u, along.v);
+  if (!(length > 0) || !(size > 0)) return;
+  const Vec2 inward{-along.v / length, along.u / length};  // the domain lies left of its loops
+  const SurfaceDerivatives d = g.firstDerivatives({0.5 * (a.u + b.u), 0.5 * (a.v + b.v)});
+  const double speed = norm(inward.u * d.du + inward.v * d.dv);
+  const ParamBox box = g.bounds();
+  const double extent = std::abs(inward.u) * (box.u.max - box.u.min) +
+                        std::abs(inward.v) * (box.v.max - box.v.min);
+  if (!(speed > 0) || !std::isfinite(extent)) return;
+  const double offset = std::min(size / speed, 0.25 * extent);
+  auto ringPoint = [&](double f) {
+    return Vec2{a.u + f * along.u + offset * inward.u, a.v + f * along.v + offset * inward.v};
+  };
+  constexpr int kSamples = 64;
+  double ring = 0;
+  for (int k = 0; k < kSamples; ++k)
+    ring += distance(g.point(ringPoint(double(k) / kSamples)),
+                     g.point(ringPoint(double(k + 1) / kSamples)));
+  constexpr double kMinimum = 6, kMaximum = 10000;
+  const int count = static_cast<int>(std::clamp(std::ceil(ring / size), kMinimum, kMaximum));
+  for (int k = 0; k < count; ++k) in.seeds.push_back(ringPoint((k + 0.5) / count));
+  in.seedSize = size;
+}
+
+// A degenerate curve (a pole) is a segment of the parameter plane: it gets copies of its node,
+// fewer than its length at the parameter box centre would need at `size` (a quarter: more only
+// make thinner triangles at the pole), and a ring of free points around it.
+void expandPole(SurfaceInput& in, const SurfaceGeometry& g, LoopPiece& piece, double size) {
+  const Vec2 a = *piece.at.front(), b = *piece.at.back();
+  const ParamBox box = g.bounds();
+  const SurfaceDerivatives d =
+      g.firstDerivatives({0.5 * (box.u.min + box.u.max), 0.5 * (box.v.min + box.v.max)});
+  const double length = norm((b.u - a.u) * d.du + (b.v - a.v) * d.dv);
+  constexpr double kMaxCopies = 10000;
+  const int pieces =
+      size > 0 ? static_cast<int>(std::clamp(std::ceil(length / size / 4), 1.0, kMaxCopies)) : 1;
+  piece.chain.assign(pieces + 1, piece.chain.front());
+  piece.at.resize(pieces + 1);
+  for (int k = 0; k <= pieces; ++k) {
+    const double f = static_cast<double>(k) / pieces;
+    piece.at[k] = Vec2{a.u + f * (b.u - a.u), a.v + f * (b.v - a.v)};
+  }
+  addPoleRing(in, g, a, b, size);
+}
+
+// Each loop closes on itself: each curve starts at the point where the previous one ends.
+void addLoop(SurfaceInput& in, const std::vector<LoopPiece>& loop) {
+  std::optional<std::uint32_t> first, previous;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const LoopPiece& piece = loop[k];
+    const auto [start, end] =
+        in.addChain(piece.chain, piece.at, std::abs(piece.curve), EdgeKind::Boundary, previous,
+                    k + 1 == loop.size() ? first : std::nullopt);
+    if (!first) first = start;
+    previous = end;
+  }
+}
+
 SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
+  const SurfaceGeometry& g = *surface.geometry;
   SurfaceInput in;
-  for (const std::vector<int>& loop : surface.loops)
-    for (int curve : loop) in.addCurve(model, mesh, curve, EdgeKind::Boundary);
-  for (int curve : surface.embeddedCurves) in.addCurve(model, mesh, curve, EdgeKind::Embedded);
+  const ParamBox box = g.bounds();
+  in.tolerance = 1e-6 * std::hypot(box.u.max - box.u.min, box.v.max - box.v.min);
+  if (!std::isfinite(in.tolerance)) in.tolerance = 0;
+  std::vector<std::vector<LoopPiece>> loops;
+  for (const std::vector<int>& loop : surface.loops) {
+    loops.emplace_back();
+    for (int curve : loop) loops.back().push_back(loopPiece(model, mesh, g, curve));
+  }
+  const double size = meanSegmentLength(loops, mesh);
+  for (std::vector<LoopPiece>& loop : loops)
+    for (LoopPiece& piece : loop)
+      if (piece.pole) expandPole(in, g, piece, size);
+  for (const std::vector<LoopPiece>& loop : loops) addLoop(in, loop);
+  for (int curve : surface.embeddedCurves) {
+    const LoopPiece piece = loopPiece(model, mesh, g, curve);
+    in.addChain(piece.chain, piece.at, curve, EdgeKind::Embedded);
+  }
   for (int point : surface.embeddedPoints) in.local(pointNode(mesh, point));
   return in;
 }
 
-std::vector<Vec2> parameters(const SurfaceGeometry& g, const Mesh& mesh,
-                             const std::vector<NodeIndex>& nodes) {
+std::vector<Vec2> parameters(const SurfaceGeometry& g, const Mesh& mesh, const SurfaceInput& in) {
   std::vector<Vec2> uv;
-  uv.reserve(nodes.size());
-  for (NodeIndex n : nodes) uv.push_back(g.project(mesh.node(n)));
+  uv.reserve(in.nodes.size());
+  for (std::size_t k = 0; k < in.nodes.size(); ++k)
+    uv.push_back(in.uv[k] ? *in.uv[k] : g.project(mesh.node(in.nodes[k])));
   return uv;
 }
 
@@ -107,6 +262,7 @@ void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh
   std::vector<int> count(in.nodes.size(), 0);
   for (const ConstrainedSegment& s : in.segments) {
     const double length = distance(mesh.node(in.nodes[s.a]), mesh.node(in.nodes[s.b]));
+    if (!(length > 0)) continue;  // a piece of a pole
     total[s.a] += length, total[s.b] += length;
     ++count[s.a], ++count[s.b];
   }
@@ -118,6 +274,10 @@ void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh
     else
       tri.setSize(k + first, mesh.nodeSize(n) > 0 ? mesh.nodeSize(n) : fallback);
   }
+}
+
+std::uint32_t firstSeed(const SurfaceInput& in) {
+  return Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
 }
 
 // Copies the triangles and their new vertices into the surface's EntityMesh.
@@ -139,8 +299,13 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
     em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
     mesh.setNodeSize(node, planar.sizes[v]);
   }
+  // A triangle with two corners at a pole has collapsed: it is left out.
   ElementBlock& triangles = em.block(ElementType::Triangle3);
-  for (std::uint32_t v : planar.triangles) triangles.nodes.push_back(globalOf[v]);
+  for (std::size_t t = 0; t + 2 < planar.triangles.size(); t += 3) {
+    const NodeIndex a = globalOf[planar.triangles[t]], b = globalOf[planar.triangles[t + 1]],
+                    c = globalOf[planar.triangles[t + 2]];
+    if (a != b && b != c && c != a) triangles.nodes.insert(triangles.nodes.end(), {a, b, c});
+  }
 }
 
 }  // namespace
@@ -153,11 +318,12 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
   const SurfaceGeometry& g = *surface.geometry;
   const SurfaceInput in = collectInput(model, surface, mesh);
-  const std::vector<Vec2> uv = parameters(g, mesh, in.nodes);
+  const std::vector<Vec2> uv = parameters(g, mesh, in);
   const WorkFrame frame(g, boxCenter(uv));
   std::vector<Vec2> work;
-  work.reserve(uv.size());
+  work.reserve(uv.size() + in.seeds.size());
   for (Vec2 p : uv) work.push_back(frame.toWork(p));
+  for (Vec2 p : in.seeds) work.push_back(frame.toWork(p));
 
   Triangulation2D tri = triangulateBoundary(in, work, id, mesh);
   std::vector<std::uint8_t> inside = classifyInside(tri);
@@ -165,15 +331,26 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     throw MeshError(id, "the boundary encloses no area");
 
   const SurfaceMetric metric(g, frame);
-  const WorkPlaneSize field = [&](Vec2 work) {
-    return rules.finish(fields->at(g.point(frame.toParam(work)), id));
-  };
+  // Bounds on the interior's size besides the boundary's: the background field, and with
+  // Mesh.MeshSizeFromCurvature the surface's own curvature.
   const bool withField = fields && fields->hasBackground();
+  const bool withCurvature = rules.elementsPerTwoPi > 0 && !g.isPlane();
+  const WorkPlaneSize field = [&](Vec2 work) {
+    const Vec2 uv = frame.toParam(work);
+    double size = withField ? fields->at(g.point(uv), id) : rules.sizeMax;
+    if (withCurvature) size = std::min(size, rules.curvatureSize(surfaceCurvature(g, uv)));
+    return rules.finish(size);
+  };
   setBoundarySizes(in, rules, mesh, tri);
+  for (std::size_t k = 0; k < in.seeds.size(); ++k)
+    tri.setSize(firstSeed(in) + static_cast<std::uint32_t>(k), in.seedSize);
+  // The rings around poles stay where they are put: smoothing in the surface's metric, which
+  // vanishes along a pole, would slide them round the turn.
   const std::uint32_t firstMovable =
-      Triangulation2D::kFirstVertex + static_cast<std::uint32_t>(in.nodes.size());
+      firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
   SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
-                           g.isPlane() ? nullptr : &metric, withField ? &field : nullptr};
+                           g.isPlane() ? nullptr : &metric,
+                           withField || withCurvature ? &field : nullptr};
   const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "io/msh_reader.h"
@@ -306,6 +307,40 @@ TEST_F(ModelCommands, IncludeAndListFromFileReadOnlyRegularFiles) {
             std::string::npos);
   EXPECT_NE(firstLineOf("x() = ListFromFile(\"/dev/zero\");").find("cannot open '/dev/zero'"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace geomesh::testing
+
+namespace geomesh::testing {
+namespace {
+
+// A CAD file merged by a script meshes: its cylindrical bore closes on a seam.
+class CadImport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratch::path(
+        "cad-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy_file(fs::path(GEOMESH_SOURCE_DIR) / "tutorials" / "part.step", dir_ / "part.step");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string runMain(ScriptRun& run, const std::string& text) {
+    return run.run(text, (dir_ / "main.geo").string());
+  }
+  fs::path dir_;
+};
+
+TEST_F(CadImport, MergedStepPartMeshesToItsArea) {
+  ScriptRun run;
+  runMain(run, "Merge \"part.step\";\nMesh.MeshSizeMax = 0.1;\nMesh 2;\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  const Model& model = run.session.model();
+  EXPECT_EQ(model.volumes().size(), 1u);
+  EXPECT_EQ(model.surfaces().size(), 7u);
+  const double pi = std::numbers::pi;
+  EXPECT_NEAR(triangleArea(run.session.mesh()), 2 * (4 - 0.16 * pi) + 4 + 0.4 * pi, 0.02);
 }
 
 }  // namespace
