@@ -20,6 +20,8 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 // Tags follow Gmsh's OpenCASCADE kernel: a shape's sub-shapes not known yet get the next free
 // tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
 // GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
+// Not offered yet (handed to the built-in factory): the older form of Periodic Surface,
+// physical groups and Geometry.Tolerance (kept by the built-in factory), the unrolled .geo.
 class OccFactory final : public GeometryFactory, public SolidModeling {
  public:
   OccFactory();
@@ -154,7 +156,8 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   double volume(int tag) const;  // of the volume `tag`; throws GeometryError if undefined
   double area(int tag) const;    // of the surface `tag`
   double length(int tag) const;  // of the curve `tag`
-  // The largest tag bound; dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
+  // The largest tag in use (as in the reference, removing the entity of the largest tag frees
+  // it); dim 0..3 for entities, 4 for curve loops, 5 for surface loops.
   int maxTag(int kind) const override;
 
   // Adds (or replaces) this factory's entities in the model; other entities are kept.

@@ -211,48 +211,35 @@ std::array<double, 12> folded(const AffineMap& map) {
   return m;
 }
 
-template <class Maker>
-void rebindImages(OccShapes& s, int dim, int tag, const TopoDS_Shape& old, Maker& maker) {
-  std::vector<std::pair<int, std::pair<int, TopoDS_Shape>>> images;
-  for (int sub = dim; sub >= 0; --sub)
-    for (TopExp_Explorer it(old, kTypes[sub]); it.More(); it.Next())
-      if (s.isBound(sub, it.Current()))
-        images.push_back({sub, {s.tagOf(sub, it.Current()), maker.ModifiedShape(it.Current())}});
-  s.unbind(dim, tag, true);
-  for (const auto& [sub, image] : images)
-    if (!s.contains(sub, image.first)) {
-      s.byTag[sub][image.first] = image.second;
-      s.tags[sub].Bind(image.second, image.first);
-    }
-}
 
 }  // namespace
 
+// As the reference does: each shape keeps its tag, and its sub-shapes, made anew, take new
+// tags (after the shapes' old sub-shapes are gone).
 void OccFactory::transform(const std::vector<EntityId>& shapes, const AffineMap& map) {
   const std::array<double, 12> m = folded(map);
   double scale = 1;
   const bool similarity = isSimilarity(map, scale);
+  std::vector<std::pair<EntityId, TopoDS_Shape>> images;
   for (const EntityId& e : shapes) {
-    const int tag = std::abs(e.tag);
-    const TopoDS_Shape old = shapes_->find(e.dim, tag);
-    guarded("transformation of " + entityName(e.dim, tag), [&] {
+    const EntityId id{e.dim, std::abs(e.tag)};
+    const TopoDS_Shape& old = shapes_->find(id.dim, id.tag);
+    images.emplace_back(id, guarded("transformation of " + entityName(id.dim, id.tag), [&] {
       if (similarity) {
         gp_Trsf t;
         t.SetValues(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11]);
-        BRepBuilderAPI_Transform maker(old, t, true);
-        rebindImages(*shapes_, e.dim, tag, old, maker);
-      } else {
-        gp_GTrsf t;
-        for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 3; ++c) t.SetValue(r + 1, c + 1, m[4 * r + c]);
-          t.SetValue(r + 1, 4, m[4 * r + 3]);
-        }
-        BRepBuilderAPI_GTransform maker(old, t, true);
-        rebindImages(*shapes_, e.dim, tag, old, maker);
+        return BRepBuilderAPI_Transform(old, t, true).Shape();
       }
-      return 0;
-    });
+      gp_GTrsf t;
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) t.SetValue(r + 1, c + 1, m[4 * r + c]);
+        t.SetValue(r + 1, 4, m[4 * r + 3]);
+      }
+      return BRepBuilderAPI_GTransform(old, t, true).Shape();
+    }));
   }
+  for (const auto& [id, image] : images) shapes_->unbind(id.dim, id.tag, true);
+  for (const auto& [id, image] : images) shapes_->bindTree(id.dim, id.tag, image);
 }
 
 std::vector<EntityId> OccFactory::duplicate(const std::vector<EntityId>& shapes) {

@@ -1,7 +1,9 @@
 // Tag bookkeeping of the OpenCASCADE factory: binding shapes and their sub-shapes to tags.
 #include "kernel/occ/occ_shapes.h"
 
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Iterator.hxx>
 
 #include "kernel/geometry_error.h"
@@ -80,14 +82,6 @@ int OccShapes::bindNew(int dim, const TopoDS_Shape& s) {
   return tag;
 }
 
-bool OccShapes::usedByOther(int dim, const TopoDS_Shape& s) const {
-  for (int up = dim + 1; up <= 3; ++up)
-    for (const auto& [tag, shape] : byTag[up])
-      for (TopExp_Explorer it(shape, kShapeTypes[dim]); it.More(); it.Next())
-        if (it.Current().IsSame(s)) return true;
-  return false;
-}
-
 void OccShapes::unbind(int dim, int tag, bool recursive) {
   auto found = byTag[dim].find(tag);
   if (found == byTag[dim].end()) return;
@@ -97,15 +91,22 @@ void OccShapes::unbind(int dim, int tag, bool recursive) {
   extrusions.erase({dim, tag});
   constraints.erase({dim, tag});
   if (!recursive) return;
-  for (int sub = dim - 1; sub >= 0; --sub)
+  // From the highest dimension down: a sub-shape of `shape` stays when a shape still bound
+  // (of a higher dimension) holds it.
+  for (int sub = dim - 1; sub >= 0; --sub) {
+    TopTools_IndexedMapOfShape used;
+    for (int up = sub + 1; up <= 3; ++up)
+      for (const auto& entry : byTag[up])
+        TopExp::MapShapes(entry.second, kShapeTypes[sub], used);
     for (TopExp_Explorer it(shape, kShapeTypes[sub]); it.More(); it.Next())
-      if (isBound(sub, it.Current()) && !usedByOther(sub, it.Current())) {
+      if (isBound(sub, it.Current()) && !used.Contains(it.Current())) {
         const int subTag = tagOf(sub, it.Current());
         tags[sub].UnBind(it.Current());
         byTag[sub].erase(subTag);
         extrusions.erase({sub, subTag});
         constraints.erase({sub, subTag});
       }
+  }
 }
 
 }  // namespace geomesh

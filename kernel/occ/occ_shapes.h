@@ -58,7 +58,6 @@ struct OccShapes {
 
  private:
   void bindOne(int dim, int tag, const TopoDS_Shape& s);
-  bool usedByOther(int dim, const TopoDS_Shape& s) const;
 };
 
 // Runs `build`, turning an OpenCASCADE failure into a GeometryError "what: reason".

@@ -105,6 +105,20 @@ TEST(OccPrimitives, BadInputIsAGeometryError) {
   }
 }
 
+// A transformed shape keeps its tag; its sub-shapes are numbered anew, after the largest tags
+// still in use (the reference's numbering).
+TEST(OccPrimitives, TransformsNumberSubShapesAnew) {
+  OccFactory occ;
+  occ.addBox(1, {0, 0, 0}, {1, 1, 1});
+  occ.addSphere(2, {3, 0, 0}, 0.5);
+  EXPECT_EQ(occ.duplicate({{3, 1}}), (std::vector<EntityId>{{3, 3}}));  // points 11..18
+  occ.transform({{3, 2}}, AffineMap::dilation({0, 0, 0}, {2, 2, 2}));
+  EXPECT_FALSE(occ.contains({0, 9}));
+  EXPECT_EQ(occ.maxTag(0), 20);
+  EXPECT_EQ(occ.boundary({{3, 2}}, false), (std::vector<EntityId>{{2, 14}}));
+  EXPECT_NEAR(occ.volume(2), 4 * std::numbers::pi / 3, 1e-9);
+}
+
 TEST(OccPrimitives, TransformAndDuplicateKeepTags) {
   OccFactory occ;
   occ.addBox(1, {0, 0, 0}, {1, 1, 1});
