@@ -1,3 +1,4 @@
+// Session: running scripts, synchronizing the model, reading .msh files, meshing, origins.
 #include "api/session.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Session: options, geometry factory, model, mesh and output of one run, without globals.
 #pragma once
 
 #include <iosfwd>

@@ -1,3 +1,4 @@
+// Parsing of geomesh's command line, Gmsh's batch-mode flags included, and the -help text.
 #include "app/command_line.h"
 
 #include <charconv>

@@ -1,3 +1,4 @@
+// CommandLine: the geomesh command's arguments as Gmsh's batch mode spells them.
 #pragma once
 
 #include <optional>

@@ -1,3 +1,4 @@
+// ConsoleLog: prefixed log lines and diagnostics on standard error, filtered by verbosity.
 #include "app/console_log.h"
 
 #include <ostream>

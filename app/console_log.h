@@ -1,3 +1,4 @@
+// ConsoleLog: the command's message sink, with Gmsh's verbosity levels 0 to 99.
 #pragma once
 
 #include <iosfwd>

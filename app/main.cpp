@@ -1,3 +1,4 @@
+// The geomesh executable: hands its arguments and standard streams to runGeomesh.
 #include <iostream>
 #include <string>
 #include <vector>

@@ -1,3 +1,4 @@
+// Element counts, measures, quality and physical groups of a mesh, and their printed form.
 #include "app/mesh_summary.h"
 
 #include <algorithm>

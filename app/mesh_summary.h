@@ -1,3 +1,4 @@
+// MeshSummary: the figures of a run that golden tests compare, and the model's description.
 #pragma once
 
 #include <cstddef>

@@ -1,3 +1,4 @@
+// The geomesh command: evaluates scripts or reads .msh files, meshes, and writes the output.
 #include "app/run.h"
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// runGeomesh: the whole geomesh command, with its output and error streams given.
 #pragma once
 
 #include <iosfwd>

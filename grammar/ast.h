@@ -1,3 +1,4 @@
+// The syntax tree of a .geo script: expressions, assignments, commands, loops, macros.
 #pragma once
 
 #include <memory>

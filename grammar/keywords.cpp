@@ -1,3 +1,4 @@
+// The tables of command words, tail words, attribute names and built-in function names.
 #include "grammar/keywords.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Lookups of the script's reserved words: commands, tail words, attributes, functions.
 #pragma once
 
 #include <span>

@@ -1,3 +1,4 @@
+// parseScript: runs the Bison parser over the re2c lexer to build a script's syntax tree.
 #include "grammar/parse.h"
 
 #include "grammar/tokenizer.h"

@@ -1,3 +1,4 @@
+// parseScript: a whole .geo script to its syntax tree, or a located SyntaxError.
 #pragma once
 
 #include <string>

@@ -1,3 +1,4 @@
+// Node builders for the grammar actions, the nesting bound, and syntax error messages.
 #include "grammar/parse_helpers.h"
 
 #include <algorithm>

@@ -1,6 +1,5 @@
-#pragma once
-
 // Small builders used by the grammar actions in parser.y, kept here so the actions stay short.
+#pragma once
 
 #include "grammar/ast.h"
 #include "grammar/parser.hpp"

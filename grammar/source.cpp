@@ -1,3 +1,4 @@
+// SourceFile::lineText: one line of a script, for diagnostics to quote.
 #include "grammar/source.h"
 
 namespace geomesh {

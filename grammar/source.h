@@ -1,3 +1,4 @@
+// SourceLocation, SourceFile and SyntaxError: where in a script, its text, and what is wrong.
 #pragma once
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// Lexer: the re2c scanner's interface, with its tracking of unclosed brackets and blocks.
 #pragma once
 
 #include <string>

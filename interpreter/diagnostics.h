@@ -1,3 +1,4 @@
+// formatDiagnostic, ScriptError (a script's located error) and ScriptExit (Exit;).
 #pragma once
 
 #include <exception>

@@ -1,3 +1,4 @@
+// Statements of a script: For, If, macros, Call, Include, and located errors and warnings.
 #include "interpreter/run_script.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Interpreter: walks a script's syntax tree, with its variables, macros and source texts.
 #pragma once
 
 #include <deque>

@@ -1,3 +1,4 @@
+// Value's constructors for numbers, lists and strings, and the names of its kinds.
 #include "interpreter/value.h"
 
 namespace geomesh {

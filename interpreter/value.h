@@ -1,3 +1,4 @@
+// Value: what a script expression evaluates to: number, list, string or list of strings.
 #pragma once
 
 #include <string>

@@ -1,3 +1,4 @@
+// selectMshContent: which nodes and elements an MSH file saves, and the tag of each node.
 #include "io/msh_content.h"
 
 #include <algorithm>

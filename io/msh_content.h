@@ -1,3 +1,4 @@
+// MshContent: the nodes and elements an MSH file holds, chosen once for every version.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// MshDecoder: checked reads of MSH text tokens and binary values, with line-numbered errors.
 #include "io/msh_decoder.h"
 
 #include <charconv>

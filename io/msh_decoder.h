@@ -1,3 +1,4 @@
+// MshDecoder: reads MSH values as text or binary from memory; bad input throws MshReadError.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// MshEncoder: buffered output of MSH values as text or little-endian binary.
 #include "io/msh_encoder.h"
 
 #include <charconv>

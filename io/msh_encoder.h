@@ -1,3 +1,4 @@
+// MshEncoder: writes each MSH section once for both encodings, text and binary.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// MshReadState: what the MSH section readers build up, and the section readers' declarations.
 #pragma once
 
 #include <map>

@@ -1,3 +1,4 @@
+// The MSH reader: $MeshFormat, $PhysicalNames, dispatch of sections to the 4.1 or 2.2 readers.
 #include "io/msh_reader.h"
 
 #include <algorithm>

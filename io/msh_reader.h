@@ -1,3 +1,4 @@
+// readMsh and MshReadError: MSH 4.1 and 2.2 files, ASCII or binary, into a model and a mesh.
 #pragma once
 
 #include <iosfwd>

@@ -1,3 +1,4 @@
+// The MSH sections shared by the writers of each version: header, names, bodies, $Periodic.
 #pragma once
 
 #include "kernel/model.h"

@@ -1,3 +1,4 @@
+// The MSH writer: $MeshFormat, $PhysicalNames, each version's body, via a temporary file.
 #include "io/msh_writer.h"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// writeMsh and MshWriteOptions: a mesh in Gmsh's MSH format, 4.1 or 2.2, ASCII or binary.
 #pragma once
 
 #include <iosfwd>

@@ -1,3 +1,4 @@
+// AffineMap's translation, rotation, symmetry and dilation, rounded as Gmsh's built-in kernel.
 #include "kernel/affine_map.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// AffineMap: a 3 x 4 affine transformation about a pivot, for transforms and periodicity.
 #pragma once
 
 #include <array>

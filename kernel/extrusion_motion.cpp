@@ -1,3 +1,4 @@
+// ExtrusionMotion: points, velocities and turned vectors along a translation, rotation, twist.
 #include "kernel/extrusion_motion.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// ExtrusionMotion: the rigid motions of an extrusion's sweep: translation, rotation or twist.
 #pragma once
 
 #include "kernel/vec3.h"

@@ -1,3 +1,4 @@
+// CurveGeometry and SurfaceGeometry: the parametric shapes meshers see, from either kernel.
 #pragma once
 
 #include <optional>

@@ -1,3 +1,4 @@
+// GeometryError: a geometry construction that cannot be carried out, naming the entity.
 #pragma once
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// MessageSink: where the library reports progress and warnings; SilentSink drops them.
 #pragma once
 
 #include <string_view>

@@ -1,3 +1,4 @@
+// Model: entities, adjacencies both ways, physical groups and bounding boxes of curves.
 #include "kernel/model.h"
 
 #include <algorithm>

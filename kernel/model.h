@@ -1,3 +1,4 @@
+// Model: the boundary representation of points, curves, surfaces, volumes; mesh constraints.
 #pragma once
 
 #include <map>

@@ -1,3 +1,4 @@
+// fitPlane by Newell's method, and PlaneGeometry's axes and projection.
 #include "kernel/plane_geometry.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// fitPlane (best-fit plane of a polygon) and PlaneGeometry (a flat parametric surface).
 #pragma once
 
 #include <span>

@@ -1,3 +1,4 @@
+// Vec3 and Vec2: points and vectors in space and in a parameter plane, with their operations.
 #pragma once
 
 #include <cmath>

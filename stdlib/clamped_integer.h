@@ -1,3 +1,4 @@
+// clampedInteger: a script's number truncated and clamped into an integer type, NaN as 0.
 #pragma once
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The X11 colour table, names written as scripts spell them, and its lookups.
 #include "stdlib/colors.h"
 
 #include <algorithm>

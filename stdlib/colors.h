@@ -1,3 +1,4 @@
+// namedColor and colorNames: X11 colour names to packed RGB values, as colour options hold.
 #pragma once
 
 #include <optional>

@@ -1,3 +1,4 @@
+// editDistance (optimal string alignment, case ignored) and closestNames for suggestions.
 #include "stdlib/edit_distance.h"
 
 #include <algorithm>

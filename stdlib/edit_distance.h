@@ -1,3 +1,4 @@
+// editDistance and closestNames: "did you mean" suggestions for misspelled names.
 #pragma once
 
 #include <cstddef>
@@ -8,7 +9,8 @@
 
 namespace geomesh {
 
-// Levenshtein distance, ignoring case differences.
+// Edit distance (insertions, deletions, substitutions, and swaps of two adjacent letters, each
+// counting one), ignoring case differences.
 std::size_t editDistance(std::string_view a, std::string_view b);
 
 // The candidates closest to `word` (at most `limit`), only those close enough to be a

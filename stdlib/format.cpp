@@ -1,3 +1,4 @@
+// formatPrintf: each conversion of a printf format checked and applied to its script value.
 #include "stdlib/format.h"
 
 #include <cctype>

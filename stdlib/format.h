@@ -1,3 +1,4 @@
+// formatPrintf: printf-style formatting of script values for Printf and Sprintf.
 #pragma once
 
 #include <span>

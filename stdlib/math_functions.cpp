@@ -1,3 +1,4 @@
+// The table of numeric built-in functions (Sin, Atan2, Round, Rand, ...) and their arities.
 #include "stdlib/math_functions.h"
 
 #include <cmath>

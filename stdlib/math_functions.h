@@ -1,3 +1,4 @@
+// callMathFunction: the numeric built-in functions of scripts, with a per-session Rand().
 #pragma once
 
 #include <cstddef>

@@ -1,3 +1,4 @@
+// OptionSpec: one row of the built-in General., Geometry. and Mesh. option tables.
 #pragma once
 
 #include <span>

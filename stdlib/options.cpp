@@ -1,3 +1,4 @@
+// OptionRegistry: built from the option tables; lookups by name or alias; -help-options lines.
 #include "stdlib/options.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// OptionRegistry: a session's General., Geometry. and Mesh. options, defaults and old names.
 #pragma once
 
 #include <map>

@@ -1,3 +1,4 @@
+// expandRange, linSpace and logSpace, stepping by repeated addition as Gmsh does.
 #include "stdlib/ranges.h"
 
 #include <cmath>

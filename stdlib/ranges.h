@@ -1,3 +1,4 @@
+// expandRange (first:last:step as Gmsh lists it), LinSpace and LogSpace.
 #pragma once
 
 #include <optional>

@@ -1,3 +1,4 @@
+// Process and total memory from /proc, and the running executable's path.
 #include "stdlib/system_info.h"
 
 #include <filesystem>

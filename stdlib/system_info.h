@@ -1,3 +1,4 @@
+// Memory in use and installed, and the executable's path (Memory, General.ExecutableFileName).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
-#pragma once
 // CAD parts for tests, built with OpenCASCADE and written to scratch BREP or STEP files at run
 // time: a cylinder, a sphere, a cone, a torus and a box with a cylindrical hole.
+#pragma once
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>

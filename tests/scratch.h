@@ -1,3 +1,4 @@
+// scratch::path: per-process temporary paths for the files tests write.
 #pragma once
 // Where tests that write files write them: a path in the temporary directory that is unique
 // to the running process, so that test runs of several build trees at once never touch each

@@ -1,3 +1,4 @@
+// CircleArcGeometry: points and derivatives of a circle arc, radius blended between its ends.
 #include "kernel/geo/circle_arc_geometry.h"
 
 #include <cmath>

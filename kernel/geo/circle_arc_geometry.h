@@ -1,3 +1,4 @@
+// CircleArcGeometry: a circle arc of at most pi, parametrized as Gmsh's built-in kernel does.
 #pragma once
 
 #include "kernel/geometry.h"

@@ -1,3 +1,4 @@
+// EllipseArcGeometry, and makeEllipseArc: the ellipse through both ends of Ellipse(t).
 #include "kernel/geo/ellipse_arc_geometry.h"
 
 #include <cmath>

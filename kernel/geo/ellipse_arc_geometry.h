@@ -1,3 +1,4 @@
+// EllipseArcGeometry: an arc of ellipse over its parametric angles, and makeEllipseArc.
 #pragma once
 
 #include <cmath>

@@ -1,6 +1,5 @@
-#pragma once
-
 // Helpers shared by the files of the built-in kernel (not part of its interface).
+#pragma once
 
 #include <algorithm>
 #include <sstream>

@@ -1,3 +1,4 @@
+// GeoFactory: points, lines, curve loops chained as Gmsh does, surfaces, volumes and tags.
 #include "kernel/geo/geo_factory.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// GeoFactory: the built-in geometry kernel of .geo scripts, checked one definition at a time.
 #pragma once
 
 #include <array>

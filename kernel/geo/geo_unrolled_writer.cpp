@@ -1,3 +1,4 @@
+// writeUnrolledGeo: the built-in kernel's entities and mesh constraints as a flat .geo script.
 #include "kernel/geo/geo_unrolled_writer.h"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// writeUnrolledGeo and its hooks: the .geo_unrolled script that `-0` saves.
 #pragma once
 
 #include <iosfwd>

@@ -1,3 +1,4 @@
+// LineGeometry::project: the parameter of the closest point on a straight line.
 #include "kernel/geo/line_geometry.h"
 
 namespace geomesh {

@@ -1,3 +1,4 @@
+// LineGeometry: a straight segment parametrized over [0, 1].
 #pragma once
 
 #include "kernel/geometry.h"

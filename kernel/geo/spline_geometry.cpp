@@ -1,3 +1,4 @@
+// Cox-de Boor evaluation of B-spline and Bezier curves, and Catmull-Rom interpolating splines.
 #include "kernel/geo/spline_geometry.h"
 
 #include <algorithm>

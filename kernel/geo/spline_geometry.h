@@ -1,3 +1,4 @@
+// BSplineGeometry (BSpline, Bezier) and CatmullRomGeometry (Spline) of the built-in kernel.
 #pragma once
 
 #include <vector>

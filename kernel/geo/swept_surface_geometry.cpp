@@ -1,3 +1,4 @@
+// Swept surfaces, Coons patches of 3 or 4 sides, spherical patches, and projection onto them.
 #include "kernel/geo/swept_surface_geometry.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SweptSurfaceGeometry, CoonsSurfaceGeometry, SphericalPatchGeometry and projectOnSurface.
 #pragma once
 
 #include <array>

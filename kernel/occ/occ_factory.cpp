@@ -1,3 +1,4 @@
+// OccFactory: OpenCASCADE boxes, their sub-shapes tagged, exported to the Model.
 #include "kernel/occ/occ_factory.h"
 
 #include <BRepBndLib.hxx>

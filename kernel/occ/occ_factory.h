@@ -1,3 +1,4 @@
+// OccFactory: the OpenCASCADE kernel behind a plain interface (SetFactory("OpenCASCADE")).
 #pragma once
 
 #include <memory>

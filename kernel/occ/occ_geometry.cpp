@@ -1,3 +1,4 @@
+// OccCurve and OccSurface: CurveGeometry and SurfaceGeometry over OpenCASCADE edges and faces.
 #include "kernel/occ/occ_geometry.h"
 
 #include <BRepAdaptor_Curve.hxx>

@@ -1,3 +1,4 @@
+// Curve and surface evaluators over OpenCASCADE edges and faces, without its headers.
 #pragma once
 
 // Curve and surface evaluators over OpenCASCADE edges and faces. Only kernel/occ/*.cpp include

@@ -1,3 +1,4 @@
+// checkMesh: node ownership, curve chains, orientation, conformity, Jacobians, periodicity.
 #include "mesh/checks/mesh_check.h"
 
 #include <algorithm>

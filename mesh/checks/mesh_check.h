@@ -1,3 +1,4 @@
+// checkMesh and MeshCheckReport: a mesh's defects against its model, entity by entity.
 #pragma once
 
 #include <string>

@@ -1,3 +1,4 @@
+// ElementType, numbered as in MSH files, with each type's node count, dimension and order.
 #pragma once
 
 #include <cstdint>

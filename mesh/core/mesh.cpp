@@ -1,3 +1,4 @@
+// Element names, and the lookup of element blocks and entity meshes in a Mesh.
 #include "mesh/core/mesh.h"
 
 #include <algorithm>

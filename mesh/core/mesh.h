@@ -1,3 +1,4 @@
+// Mesh: one node array; per entity its nodes, parameters, element blocks and periodic links.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// MeshOptions: the Mesh.* options the generators read, gathered from the option registry.
 #pragma once
 
 namespace geomesh {

@@ -1,3 +1,4 @@
+// orient2d, incircle, orient3d and insphere over CGAL's filtered exact predicates.
 #include "mesh/core/predicates.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,4 @@
+// Exact orientation and in-circle/in-sphere predicates behind every meshing decision.
 #pragma once
 
 #include "kernel/vec3.h"

@@ -1,3 +1,4 @@
+// Gamma and SICN of triangles and tetrahedra, mesh quality statistics, element measures.
 #include "mesh/core/quality.h"
 
 #include <algorithm>

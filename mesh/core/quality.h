@@ -1,3 +1,4 @@
+// Element quality (gamma, SICN), mesh quality statistics, and element lengths, areas, volumes.
 #pragma once
 
 #include <cstddef>

@@ -1,3 +1,4 @@
+// spatialOrder: a Hilbert-sorted biased randomized insertion order, by CGAL's spatial_sort.
 #include "mesh/core/spatial_sort.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

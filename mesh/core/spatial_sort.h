@@ -1,3 +1,4 @@
+// spatialOrder: a BRIO insertion order along a Hilbert curve for incremental Delaunay.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// meshCurve: nodes splitting the integral of 1/size along arc length, by Gauss quadrature.
 #include "mesh/curves/curve_mesher.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// meshCurve, the 1D mesher, and the node chains of meshed points and curves.
 #pragma once
 
 #include <vector>

@@ -1,3 +1,4 @@
+// transfiniteFractions: node fractions for the Progression, Bump and Beta laws.
 #include "mesh/curves/transfinite_curve.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// transfiniteFractions: where a Transfinite Curve's nodes go under Progression, Bump or Beta.
 #pragma once
 
 #include <vector>

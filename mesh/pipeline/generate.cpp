@@ -1,3 +1,4 @@
+// generateMesh: the 0D to 3D stages, surface algorithm choice, recombination, timing lines.
 #include "mesh/pipeline/generate.h"
 
 #include <algorithm>

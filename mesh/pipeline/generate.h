@@ -1,3 +1,4 @@
+// generateMesh: meshes a model up to a dimension, stage by stage.
 #pragma once
 
 #include "kernel/messages.h"

@@ -1,3 +1,4 @@
+// maximumMatching by LEMON's maximum-cardinality matching, compiled as C++17.
 #include "mesh/quads/blossom_matching.h"
 
 #include <lemon/matching.h>

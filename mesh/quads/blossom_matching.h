@@ -1,3 +1,4 @@
+// maximumMatching: Edmonds' blossom algorithm (LEMON) behind a plain C++17 interface.
 #pragma once
 
 // Plain C++17 interface: blossom_matching.cpp is compiled as C++17 (LEMON's headers are not

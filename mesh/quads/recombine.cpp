@@ -1,3 +1,4 @@
+// recombineTriangles: greedy or blossom pairing of triangles into quadrangles by corner angle.
 #include "mesh/quads/recombine.h"
 
 #include "mesh/quads/blossom_matching.h"

@@ -1,3 +1,4 @@
+// recombineTriangles, quadAngleQuality and smoothMixedMesh: triangles paired into quadrangles.
 #pragma once
 
 #include <cstddef>

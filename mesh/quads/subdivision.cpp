@@ -1,3 +1,4 @@
+// subdivideIntoQuadrangles: curves cut at their middles, triangles into 3 quads, quads into 4.
 #include "mesh/quads/subdivision.h"
 
 #include "mesh/quads/recombine.h"

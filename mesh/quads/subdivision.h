@@ -1,3 +1,4 @@
+// subdivideIntoQuadrangles: Mesh.SubdivisionAlgorithm 1, all surface elements quadrangles.
 #pragma once
 
 #include "kernel/model.h"

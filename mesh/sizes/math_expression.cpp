@@ -1,3 +1,4 @@
+// MathExpression: a recursive-descent compiler of MathEval formulas to a postfix program.
 #include "mesh/sizes/math_expression.h"
 
 #include <algorithm>

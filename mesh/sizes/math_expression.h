@@ -1,3 +1,4 @@
+// MathExpression: a MathEval field's formula, compiled once and evaluated per point.
 #pragma once
 
 #include <span>

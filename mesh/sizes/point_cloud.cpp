@@ -1,3 +1,4 @@
+// PointCloud: an array-stored k-d tree built by median splits, and its nearest-point search.
 #include "mesh/sizes/point_cloud.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// PointCloud: nearest-point distances over a fixed set of points, by a k-d tree in one array.
 #pragma once
 
 #include <cstdint>

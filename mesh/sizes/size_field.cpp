@@ -1,3 +1,4 @@
+// SizeFields: reading Field definitions, their options and defaults, cycles, and evaluation.
 #include "mesh/sizes/size_field.h"
 
 #include <algorithm>

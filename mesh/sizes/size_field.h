@@ -1,3 +1,4 @@
+// SizeFields: the Box, Ball, Distance, Threshold, MathEval, Min/Max, Restrict size fields.
 #pragma once
 
 #include <array>

@@ -1,3 +1,4 @@
+// SizeRules: point sizes, clamping, curvature bounds and minimum segments by curve shape.
 #include "mesh/sizes/size_rules.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SizeRules: the target element size from point sizes, Mesh.* options and curvature.
 #pragma once
 
 #include <map>

@@ -1,3 +1,4 @@
+// ExtrusionMesher: layered sweeps into segments, quads or triangles, prisms, hexahedra, tets.
 #include "mesh/structured/extrusion_mesher.h"
 
 #include <algorithm>

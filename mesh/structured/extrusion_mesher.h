@@ -1,3 +1,4 @@
+// ExtrusionMesher: structured meshes of entities extruded with Layers, cut by smallest node.
 #pragma once
 
 #include <map>

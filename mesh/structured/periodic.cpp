@@ -1,3 +1,4 @@
+// Periodic curves and surfaces meshed as the affine images of their masters, node for node.
 #include "mesh/structured/periodic.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Periodic meshes: implied periodic curves, and slave curves and surfaces copied from masters.
 #pragma once
 
 #include <map>

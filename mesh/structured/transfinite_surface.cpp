@@ -1,3 +1,4 @@
+// meshTransfiniteSurface: the structured grid by Coons interpolation, split per arrangement.
 #include "mesh/structured/transfinite_surface.h"
 
 #include <algorithm>

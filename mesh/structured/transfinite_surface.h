@@ -1,3 +1,4 @@
+// meshTransfiniteSurface: the structured mesh of a 3- or 4-sided Transfinite Surface.
 #pragma once
 
 #include <vector>

@@ -1,3 +1,4 @@
+// Segment recovery by Sloan's edge flips, and inside/outside classification of triangles.
 #include "mesh/surfaces/constrained_delaunay.h"
 
 #include <deque>

@@ -1,3 +1,4 @@
+// recoverSegments and classifyInside: a constrained Delaunay triangulation and its domain.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// Triangulation2D: visibility-walk location, Bowyer-Watson insertion, flips, metric in-circle.
 #include "mesh/surfaces/delaunay2d.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Triangulation2D, a corner-based 2D triangulation, and incremental Delaunay triangulation.
 #pragma once
 
 #include <span>

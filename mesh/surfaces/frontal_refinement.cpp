@@ -1,3 +1,4 @@
+// FrontalRefiner: frontal-Delaunay, its quadrangle variant, and Delaunay refinement.
 #include "mesh/surfaces/frontal_refinement.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Frontal-Delaunay refinement (Rebay), its quadrangle variant, and Delaunay refinement in 2D.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// MeshAdapter: passes of edge splits, collapses, swaps and smoothing until edges fit the size.
 #include "mesh/surfaces/mesh_adapt.h"
 
 #include <algorithm>

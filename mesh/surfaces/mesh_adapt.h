@@ -1,3 +1,4 @@
+// adaptMesh: MeshAdapt (Mesh.Algorithm 1), meshing by local modifications of a triangulation.
 #pragma once
 
 #include <cstdint>

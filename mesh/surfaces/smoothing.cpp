@@ -1,3 +1,4 @@
+// Laplacian smoothing of a 2D triangulation with quality guards, then metric Lawson flips.
 #include "mesh/surfaces/smoothing.h"
 
 #include <algorithm>

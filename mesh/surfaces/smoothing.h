@@ -1,3 +1,4 @@
+// smoothTriangulation: guarded Laplacian smoothing and Delaunay flips in the surface metric.
 #pragma once
 
 #include <cstdint>

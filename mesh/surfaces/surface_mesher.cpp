@@ -1,3 +1,4 @@
+// meshSurface: the boundary's constrained triangulation, target sizes, then the 2D algorithm.
 #include "mesh/surfaces/surface_mesher.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// meshSurface and the Mesh.Algorithm codes: one surface meshed in its parameter plane.
 #pragma once
 
 #include <vector>

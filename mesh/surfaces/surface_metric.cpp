@@ -1,3 +1,4 @@
+// WorkFrame, SurfaceMetric and MetricFrame: the first fundamental form in work-plane terms.
 #include "mesh/surfaces/surface_metric.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// WorkFrame, Metric2, SurfaceMetric and MetricFrame: lengths on a surface from its work plane.
 #pragma once
 
 #include "kernel/geometry.h"

@@ -1,3 +1,4 @@
+// TetOptimizer: edge removal by Klincsek's programme, 2-3 flips and smoothing of tetrahedra.
 #include "mesh/volumes/tet_optimizer.h"
 
 #include <algorithm>

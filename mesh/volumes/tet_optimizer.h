@@ -1,3 +1,4 @@
+// optimizeTetrahedra: improves poor tetrahedra by edge removal, 2-3 swaps and smoothing.
 #pragma once
 
 #include <cstddef>

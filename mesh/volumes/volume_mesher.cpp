@@ -1,3 +1,4 @@
+// meshVolume: boundary shells oriented, self-intersections rejected exactly, then TetGen.
 #include "mesh/volumes/volume_mesher.h"
 
 #include <tetgen.h>

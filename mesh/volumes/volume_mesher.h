@@ -1,3 +1,4 @@
+// meshVolume: the tetrahedral mesh of one volume by TetGen, boundary triangles kept.
 #pragma once
 
 #include "kernel/model.h"

@@ -1,3 +1,4 @@
+// Tests of parseCommandLine: files, dimensions, size and algorithm flags, -setnumber, errors.
 #include <gtest/gtest.h>
 
 #include "app/command_line.h"

@@ -1,3 +1,4 @@
+// Reading of golden .expected files and the checks of a figure against its expectation.
 #include "golden_expectation.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Expectation and GoldenCase: the figures, output and exit status a golden script must meet.
 #pragma once
 
 #include <string>

@@ -1,3 +1,4 @@
+// Tests of the parser: statements, shapes, options, lists, control flow, error locations.
 #include <gtest/gtest.h>
 
 #include "grammar/parse.h"

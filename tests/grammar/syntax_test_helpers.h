@@ -1,5 +1,5 @@
-#pragma once
 // Parsing helpers the grammar tests share.
+#pragma once
 #include <string>
 #include <string_view>
 

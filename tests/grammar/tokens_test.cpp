@@ -1,3 +1,4 @@
+// Tests of the lexer: numbers, keywords, operators, strings, comments and lexical errors.
 #include <gtest/gtest.h>
 
 #include "grammar/tokenizer.h"

@@ -1,3 +1,4 @@
+// Tests of For, If, macros and Call, recursion and loop limits, Exit, Abort and Error.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

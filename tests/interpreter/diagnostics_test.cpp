@@ -1,3 +1,4 @@
+// Tests of script diagnostics: caret lines, syntax errors, include chains.
 #include <gtest/gtest.h>
 
 #include "interpreter/diagnostics.h"

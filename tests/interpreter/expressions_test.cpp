@@ -1,3 +1,4 @@
+// Tests of expressions: operator precedence, modulo, comparisons, variables, math functions.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

@@ -1,3 +1,4 @@
+// Tests of geometry statements: points, lines, arcs, loops, surfaces, physical groups, tags.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

@@ -1,3 +1,4 @@
+// Tests of Include: relative paths, missing files, cycles, include chains in errors.
 #include <gtest/gtest.h>
 
 #include <filesystem>

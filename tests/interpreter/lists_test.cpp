@@ -1,3 +1,4 @@
+// Tests of lists: ranges, indexing, append and removal, list functions, item-wise arithmetic.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

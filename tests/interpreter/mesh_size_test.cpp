@@ -1,3 +1,4 @@
+// Tests of MeshSize{points} = size: prescribed point sizes and rejected tags and sizes.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

@@ -1,3 +1,4 @@
+// Tests of options set and read by scripts: old names, strings, colours, unknown options.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

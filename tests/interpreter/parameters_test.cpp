@@ -1,3 +1,4 @@
+// Tests of DefineConstant, DefineNumber, SetNumber/GetNumber and command-line overrides.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

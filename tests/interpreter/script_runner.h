@@ -1,3 +1,4 @@
+// ScriptRun and CollectingSink: running a script in tests, with its output and warnings kept.
 #pragma once
 
 #include <sstream>

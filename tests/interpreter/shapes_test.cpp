@@ -1,3 +1,4 @@
+// Tests of shape operations: Boundary, Duplicata, Extrude, transforms, Delete, Periodic.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

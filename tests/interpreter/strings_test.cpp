@@ -1,3 +1,4 @@
+// Tests of string functions, escapes, Printf formats and GetEnv.
 #include <gtest/gtest.h>
 
 #include "script_runner.h"

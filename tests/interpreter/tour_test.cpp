@@ -1,3 +1,4 @@
+// The tour.geo script prints what the reference prints; -setnumber overrides its constants.
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -1,3 +1,4 @@
+// Statements not carried out yet warn once at their location; the Memory constant is measured.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Tests of the MSH reader: 4.1 and 2.2 round trips, located errors, corrupt, truncated input.
 #include "io/msh_reader.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of the MSH writer: Gmsh's 4.1 and 2.2 layouts, physical groups, binary, safe replace.
 #include "io/msh_writer.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of the built-in kernel's curves: splines, B-splines, Bezier curves, ellipse arcs.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Tests of GeoFactory: adjacencies, loop chaining and orientation, planarity, holes, errors.
 #include "kernel/geo/geo_factory.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of the .geo_unrolled writer: entities, sizes, loops, physicals and mesh constraints.
 #include "kernel/geo/geo_unrolled_writer.h"
 
 #include <gtest/gtest.h>

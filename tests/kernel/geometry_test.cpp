@@ -1,3 +1,4 @@
+// Tests of LineGeometry, fitPlane, PlaneGeometry and CircleArcGeometry.
 #include <gtest/gtest.h>
 
 #include "kernel/geo/circle_arc_geometry.h"

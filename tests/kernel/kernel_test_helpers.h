@@ -1,5 +1,5 @@
-#pragma once
 // Fixtures and checks the kernel tests share.
+#pragma once
 #include <gtest/gtest.h>
 
 #include "kernel/geo/geo_factory.h"

@@ -1,3 +1,4 @@
+// Tests of Model: upward adjacencies forget the boundaries of replaced entities.
 #include "kernel/model.h"
 
 #include <gtest/gtest.h>

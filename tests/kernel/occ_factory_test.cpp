@@ -1,3 +1,4 @@
+// Tests of OccFactory: box volume, closed B-rep, loop orientation, evaluators.
 #include "kernel/occ/occ_factory.h"
 
 #include <gtest/gtest.h>

@@ -155,6 +155,20 @@ TEST(Layering, IncludesGoDownTheStackOnly) {
   }
 }
 
+// Every source file opens with a comment saying what it holds.
+TEST(Layering, EverySourceFileSaysWhatItHolds) {
+  for (const std::string& file : sourceFiles()) {
+    std::ifstream in(kRoot / file);
+    std::string line;
+    while (std::getline(in, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
+    }
+    const std::size_t start = line.find_first_not_of(" \t");
+    const bool comment = start != std::string::npos &&
+                         (line.compare(start, 2, "//") == 0 || line.compare(start, 2, "/*") == 0);
+    EXPECT_TRUE(comment) << file << " does not open with a comment saying what it holds";
+  }
+}
+
 // The rule itself: a test layering in which every kind of violation occurs.
 TEST(Layering, TheRuleCatchesEachKindOfViolation) {
   Layers layers;

@@ -1,3 +1,4 @@
+// Tests of the curve mesher: segment counts, graded sizes, clamping, circle nodes, chaining.
 #include "mesh/curves/curve_mesher.h"
 
 #include <gtest/gtest.h>

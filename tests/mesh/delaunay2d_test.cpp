@@ -1,3 +1,4 @@
+// Tests of the Delaunay triangulation, segment recovery, spatial sort and exact predicates.
 #include "mesh/surfaces/delaunay2d.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of layered extrusion meshes: quads, prisms, hexahedra, tets, and collapse on the axis.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Tests of generateMesh: stages, timing lines, unavailable algorithms, determinism, errors.
 #include "mesh/pipeline/generate.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of MeshAdapt and frontal-Delaunay for quadrangles: sizes, holes, curved surfaces.
 #include "mesh/surfaces/mesh_adapt.h"
 
 #include <gtest/gtest.h>

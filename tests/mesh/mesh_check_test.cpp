@@ -1,3 +1,4 @@
+// Tests of checkMesh: each kind of defect it must report, and none on a generated mesh.
 #include "mesh/checks/mesh_check.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Small models for the mesher tests: segments, arcs, planes, sphere patches, polygon builder.
 #pragma once
 
 // Small models for the mesher tests, built directly (no script, no geometry kernel): straight

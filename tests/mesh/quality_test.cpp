@@ -1,3 +1,4 @@
+// Tests of gamma and SICN on equilateral, flat and degenerate elements, and mesh statistics.
 #include "mesh/core/quality.h"
 
 #include <gtest/gtest.h>

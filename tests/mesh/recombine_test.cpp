@@ -1,3 +1,4 @@
+// Tests of recombination (simple, blossom), subdivision into quadrangles, Delaunay density.
 #include "mesh/quads/recombine.h"
 
 #include <gtest/gtest.h>

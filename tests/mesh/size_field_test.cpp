@@ -1,3 +1,4 @@
+// Tests of size fields against the reference: MathEval, Distance, Threshold, Box, Ball.
 #include "mesh/sizes/size_field.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of the surface mesher: squares, holes, L-shapes, graded sizes, embedded entities.
 #include "mesh/surfaces/surface_mesher.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of the tetrahedron optimizer on a cube and a cube with a spherical hole.
 #include "mesh/volumes/tet_optimizer.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of transfinite curves (Progression, Bump, Beta) and transfinite surfaces.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Tests of the volume mesher: cubes, holes, and rejected intersecting or folded boundaries.
 #include "mesh/volumes/volume_mesher.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests of ranges, math functions, printf formatting and edit distance.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Tests of OptionRegistry: defaults, old names, listing, suggestions, colours, reset.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
