@@ -9,6 +9,7 @@
 
 #include "grammar/diagnostic.h"
 #include "mesh/core/mesh_error.h"
+#include "tests/kernel/kernel_test_helpers.h"
 #include "tests/scratch.h"
 
 namespace fs = std::filesystem;
@@ -27,20 +28,10 @@ void addBowTie(GeometryFactory& geo) {
   geo.addPlaneSurface(1, {1});
 }
 
-void addSquare(GeometryFactory& geo) {
-  geo.addPoint(1, {0, 0, 0}, 0.5);
-  geo.addPoint(2, {1, 0, 0}, 0.5);
-  geo.addPoint(3, {1, 1, 0}, 0.5);
-  geo.addPoint(4, {0, 1, 0}, 0.5);
-  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
-}
-
 TEST(ApiGenerate, MeshesUpToTheDimension) {
   SilentSink log;
   Session session(log);
-  addSquare(session.factory());
+  addUnitSquareSurface(session.factory(), 0.5);
   api::generate(session, 2);
   EXPECT_GT(session.mesh().elementCount(2), 0u);
 }
@@ -109,7 +100,7 @@ TEST(NothingToMesh, AModelWithEntitiesOrNoIgnoredStatementIsFine) {
   Session empty(log);
   EXPECT_NO_THROW(api::requireSomethingToMesh(empty, 3));  // nothing ignored: not our case
   Session withGeometry(log);
-  addSquare(withGeometry.factory());
+  addUnitSquareSurface(withGeometry.factory(), 0.5);
   withGeometry.noteIgnoredStatement({"occ.geo", 1, 1});
   EXPECT_NO_THROW(api::requireSomethingToMesh(withGeometry, 2));
 }

@@ -9,6 +9,7 @@
 
 #include "io/formats.h"
 #include "kernel/geo/geo_factory.h"
+#include "tests/kernel/kernel_test_helpers.h"
 
 namespace geomesh {
 namespace {
@@ -18,13 +19,7 @@ namespace {
 // quadrangle on surface 9 sharing nodes, to cover more cell types.
 void buildSquare(Model& model, Mesh& mesh, bool withPhysical) {
   GeoFactory geo;
-  geo.addPoint(1, {0, 0, 0}, 1);
-  geo.addPoint(2, {1, 0, 0}, 1);
-  geo.addPoint(3, {1, 1, 0}, 1);
-  geo.addPoint(4, {0, 1, 0}, 1);
-  for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
+  addUnitSquareSurface(geo);
   if (withPhysical) geo.addPhysicalGroup(2, 5, "plate", {1});
   geo.synchronize(model);
   for (int p = 1; p <= 4; ++p) {
