@@ -102,10 +102,7 @@ std::vector<int> OccFactory::pointsOf(const std::vector<EntityId>& shapes) const
 
 namespace {
 
-// OpenCASCADE's box of the shape, which holds the shape's tolerance around it.
-BoundingBox occBox(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box, false);
+BoundingBox fromBndBox(const Bnd_Box& box) {
   BoundingBox result;
   if (box.IsVoid()) return result;
   double x0, y0, z0, x1, y1, z1;
@@ -115,17 +112,18 @@ BoundingBox occBox(const TopoDS_Shape& shape) {
   return result;
 }
 
+// OpenCASCADE's box of the shape, which holds the shape's tolerance around it.
+BoundingBox occBox(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box, false);
+  return fromBndBox(box);
+}
+
 // The tight box of the shape (without the tolerance OpenCASCADE adds around it).
 BoundingBox tightBox(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::AddOptimal(shape, box, false, false);
-  BoundingBox result;
-  if (box.IsVoid()) return result;
-  double x0, y0, z0, x1, y1, z1;
-  box.Get(x0, y0, z0, x1, y1, z1);
-  result.include(Vec3{x0, y0, z0});
-  result.include(Vec3{x1, y1, z1});
-  return result;
+  return fromBndBox(box);
 }
 
 }  // namespace
