@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "kernel/bounding_box.h"
 #include "kernel/vec3.h"
 
 namespace geomesh {
@@ -37,6 +38,13 @@ class CurveGeometry {
   // Whether the curve is a single point of space over its whole range (a CAD model's edge at
   // the pole of a sphere or the apex of a cone): its mesh is its one vertex, no segment.
   virtual bool isDegenerate() const { return false; }
+
+  // curveBoundingBox(*this), computed on first use and kept: a geometry never changes once
+  // made (a transformed curve gets a new geometry).
+  const BoundingBox& boundingBox() const;
+
+ private:
+  mutable std::optional<BoundingBox> box_;
 };
 
 struct SurfaceDerivatives {

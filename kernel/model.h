@@ -134,17 +134,6 @@ struct PhysicalGroup {
   std::vector<int> entities;  // tags of entities of dimension `dim`
 };
 
-struct BoundingBox {
-  Vec3 min{1e300, 1e300, 1e300};
-  Vec3 max{-1e300, -1e300, -1e300};
-  bool empty() const { return min.x > max.x; }
-  void include(Vec3 p);
-  void include(const BoundingBox& b);
-};
-
-// The smallest box holding the curve (its coordinates' extremes, found to rounding).
-BoundingBox curveBoundingBox(const CurveGeometry& curve);
-
 // The topological model: a boundary representation of points, curves, surfaces and volumes,
 // with adjacencies both ways and physical groups. Geometry factories fill it on synchronize().
 class Model {

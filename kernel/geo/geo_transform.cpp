@@ -288,7 +288,7 @@ BoundingBox GeoFactory::boundingBox(EntityId shape) const {
   if (shape.dim == 0) {
     box.include(points_.at(tag).xyz);
   } else if (shape.dim == 1) {
-    box = curveBoundingBox(*curveGeometry(curves_.at(tag)));
+    box = curveGeometry(curves_.at(tag))->boundingBox();
   } else {
     for (EntityId b : boundary({shape}, false)) box.include(boundingBox(b));
   }

@@ -230,7 +230,18 @@ class Checker {
         for (NodeIndex n : m->nodes) allowedStamp_[n] = stamp;
     };
     auto allowed = [&](NodeIndex n) { return allowedStamp_[n] == stamp; };
+    // The surface's own nodes carry their parameters: the normal is read there, which spares
+    // projecting each triangle (slow on CAD surfaces).
     for (NodeIndex n : em.nodes) allowedStamp_[n] = stamp;
+    const bool ownParameters = em.parametric.size() == 2 * em.nodes.size();
+    ownUvStamp_.resize(mesh_.nodeCount(), 0);
+    ownUv_.resize(mesh_.nodeCount());
+    if (ownParameters)
+      for (std::size_t k = 0; k < em.nodes.size(); ++k) {
+        ownUvStamp_[em.nodes[k]] = stamp;
+        ownUv_[em.nodes[k]] = {em.parametric[2 * k], em.parametric[2 * k + 1]};
+      }
+    auto own = [&](NodeIndex n) { return ownUvStamp_[n] == stamp; };
     for (const std::vector<int>& loop : surface.loops)
       for (int c : loop) {
         allowEntity({1, std::abs(c)});
@@ -258,7 +269,9 @@ class Checker {
       const Vec3 normal = cross(b - a, c - a);
       Vec3 reference = normal;
       if (g) {
-        const SurfaceDerivatives d = g->firstDerivatives(g->project((a + b + c) / 3));
+        const auto corner = std::find_if(n.begin(), n.end(), own);
+        const Vec2 uv = corner != n.end() ? ownUv_[*corner] : g->project((a + b + c) / 3);
+        const SurfaceDerivatives d = g->firstDerivatives(uv);
         reference = cross(d.du, d.dv);
       }
       const double scale = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
@@ -481,6 +494,9 @@ class Checker {
   double tolerance_ = 0;
   std::vector<std::uint32_t> allowedStamp_;
   std::uint32_t stamp_ = 0;
+  // ownUvStamp_[n] == the current stamp: ownUv_[n] holds node n's parameters on the surface.
+  std::vector<std::uint32_t> ownUvStamp_;
+  std::vector<Vec2> ownUv_;
   MeshCheckReport report_;
 };
 

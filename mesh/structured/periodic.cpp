@@ -73,8 +73,8 @@ double projectOnCurve(const CurveGeometry& g, Vec3 p, double guess) {
 // How a master curve's mesh lands on its slave: whether the image of the master's start is the
 // slave's end.
 bool imageIsReversed(const Model& model, const ModelCurve& slave, const ModelCurve& master,
-                     const std::vector<double>& affine) {
-  const double tol = kCoincidence * modelScale(model);
+                     const std::vector<double>& affine, double scale) {
+  const double tol = kCoincidence * scale;
   const Vec3 a = applyAffine(affine, model.point(master.startPoint)->xyz);
   const Vec3 b = applyAffine(affine, model.point(master.endPoint)->xyz);
   const Vec3 s = model.point(slave.startPoint)->xyz, e = model.point(slave.endPoint)->xyz;
@@ -91,12 +91,13 @@ bool imageIsReversed(const Model& model, const ModelCurve& slave, const ModelCur
                                       " onto its own");
 }
 
-void copyCurve(const Model& model, const ModelCurve& slave, const Periodicity& link, Mesh& mesh) {
+void copyCurve(const Model& model, const ModelCurve& slave, const Periodicity& link, double scale,
+               Mesh& mesh) {
   const EntityId id{1, slave.tag};
   const ModelCurve* master = model.curve(link.master);
   if (!master || !master->geometry || !slave.geometry)
     throw MeshError(id, "its periodic master " + curveName(link.master) + " has no geometry");
-  const bool reversed = imageIsReversed(model, slave, *master, link.affine);
+  const bool reversed = imageIsReversed(model, slave, *master, link.affine, scale);
   std::vector<NodeIndex> masterChain = curveNodeChain(model, mesh, master->tag);
   std::vector<double> masterParams = mesh.find({1, master->tag})->parametric;
   if (reversed) {
@@ -105,7 +106,7 @@ void copyCurve(const Model& model, const ModelCurve& slave, const Periodicity& l
   }
   const CurveGeometry& g = *slave.geometry;
   const Interval ms = master->geometry->range(), ss = g.range();
-  const double tol = kOnImage * modelScale(model);
+  const double tol = kOnImage * scale;
 
   EntityMesh& em = mesh.entity(id);
   em.nodes.clear();
@@ -169,8 +170,8 @@ void linkEndPoints(const Model& model, const std::map<int, Periodicity>& links, 
 
 // The slave's boundary curve the image of `curve` coincides with, or 0.
 int imageCurve(const Model& model, const ModelCurve& curve, const std::vector<double>& affine,
-               const std::vector<int>& candidates) {
-  const double tol = kCoincidence * modelScale(model);
+               const std::vector<int>& candidates, double scale) {
+  const double tol = kCoincidence * scale;
   const Interval r = curve.geometry->range();
   const Vec3 a = applyAffine(affine, model.point(curve.startPoint)->xyz);
   const Vec3 b = applyAffine(affine, model.point(curve.endPoint)->xyz);
@@ -183,7 +184,7 @@ int imageCurve(const Model& model, const ModelCurve& curve, const std::vector<do
                       (distance(a, e) <= tol && distance(b, s) <= tol);
     const Interval cr = c->geometry->range();
     const double t = projectOnCurve(*c->geometry, mid, 0.5 * (cr.min + cr.max));
-    if (ends && distance(c->geometry->point(t), mid) <= kOnImage * modelScale(model)) return tag;
+    if (ends && distance(c->geometry->point(t), mid) <= kOnImage * scale) return tag;
   }
   return 0;
 }
@@ -259,13 +260,12 @@ void orientAlongNormal(const SurfaceGeometry& g, const Mesh& mesh, EntityMesh& e
   }
 }
 
-void copySurface(const Model& model, const ModelSurface& slave, Mesh& mesh) {
+void copySurface(const Model& model, const ModelSurface& slave, double scale, Mesh& mesh) {
   const EntityId id{2, slave.tag};
   const Periodicity& link = *slave.periodic;
   const EntityMesh* masterMesh = mesh.find({2, link.master});
   if (!model.surface(link.master) || !masterMesh)
     throw MeshError(id, "its periodic master " + surfaceName(link.master) + " has no mesh");
-  const double scale = modelScale(model);
   std::unordered_map<NodeIndex, NodeIndex> image;  // master node -> slave node
   const NodeLocator slaveBoundary(mesh, closureBoundaryNodes(model, mesh, slave.tag),
                                   kCoincidence * scale);
@@ -318,6 +318,7 @@ Vec3 applyAffine(const std::vector<double>& a, Vec3 p) {
 
 std::map<int, Periodicity> periodicCurves(const Model& model) {
   std::map<int, Periodicity> links;
+  const double scale = modelScale(model);
   for (const auto& [tag, curve] : model.curves())
     if (curve.periodic) links[tag] = *curve.periodic;
   for (const auto& [tag, surface] : model.surfaces()) {
@@ -326,7 +327,7 @@ std::map<int, Periodicity> periodicCurves(const Model& model) {
     for (int masterCurve : boundaryCurves(model, surface.periodic->master)) {
       const ModelCurve* c = model.curve(masterCurve);
       if (!c || !c->geometry) continue;
-      const int slaveCurve = imageCurve(model, *c, surface.periodic->affine, slaveCurves);
+      const int slaveCurve = imageCurve(model, *c, surface.periodic->affine, slaveCurves, scale);
       if (slaveCurve == 0)
         throw MeshError({2, tag}, "the image of " + curveName(masterCurve) +
                                       " of its periodic master " +
@@ -343,8 +344,9 @@ void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& li
                         Mesh& mesh) {
   std::map<int, int> masterOf;
   for (const auto& entry : links) masterOf[entry.first] = entry.second.master;
+  const double scale = modelScale(model);
   inDependencyOrder(1, masterOf, [&](int tag) {
-    copyCurve(model, *model.curve(tag), links.at(tag), mesh);
+    copyCurve(model, *model.curve(tag), links.at(tag), scale, mesh);
   });
   linkEndPoints(model, links, mesh);
 }
@@ -355,8 +357,9 @@ void copyPeriodicSurfaces(const Model& model, Mesh& mesh) {
   std::map<int, int> masterOf;
   for (const auto& [tag, surface] : model.surfaces())
     if (surface.periodic) masterOf[tag] = surface.periodic->master;
+  const double scale = modelScale(model);
   inDependencyOrder(2, masterOf, [&](int tag) {
-    copySurface(model, *model.surface(tag), mesh);
+    copySurface(model, *model.surface(tag), scale, mesh);
   });
 }
 
