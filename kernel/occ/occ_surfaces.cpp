@@ -5,6 +5,10 @@
 #include <BRepOffsetAPI_MakeFilling.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom_Surface.hxx>
+#include <Precision.hxx>
+#include <ShapeAnalysis.hxx>
+#include <ShapeFix_Edge.hxx>
 #include <ShapeFix_Face.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <TopExp_Explorer.hxx>
@@ -44,19 +48,37 @@ void OccFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   shapes_->bindTree(2, tag, face);
 }
 
-// A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them.
-void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops) {
+// A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them: the
+// filling's own face has new edges, so the face is rebuilt on the loop's wire, which keeps the
+// script's curves (and their tags) as its boundary.
+void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
+                                   const std::vector<int>& through) {
   tag = primitiveTag(2, tag, "Surface");
   const std::string what = "Surface " + std::to_string(tag);
   if (curveLoops.size() != 1) throw GeometryError(what + ": a filling takes one curve loop");
   const TopoDS_Shape& wire = shapes_->findWire(std::abs(curveLoops[0]));
   const TopoDS_Shape face = guarded(what, [&] {
-    BRepOffsetAPI_MakeFilling filling;
+    // Degree 2 (OpenCASCADE defaults otherwise), as the reference builds its fillings.
+    BRepOffsetAPI_MakeFilling filling(2);
     for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())
       filling.Add(TopoDS::Edge(it.Current()), GeomAbs_C0, true);
+    for (int point : through)
+      filling.Add(BRep_Tool::Pnt(TopoDS::Vertex(shapes_->find(0, std::abs(point)))));
     filling.Build();
     if (!filling.IsDone()) throw GeometryError(what + ": no surface fills this loop");
-    return filling.Shape();
+    TopExp_Explorer faces(filling.Shape(), TopAbs_FACE);
+    if (!faces.More()) throw GeometryError(what + ": no surface fills this loop");
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(faces.Current()));
+    BRepBuilderAPI_MakeFace maker(surface, TopoDS::Wire(wire), true);
+    if (!maker.IsDone()) return filling.Shape();
+    // The wire's curves lie on the surface only to the filling's tolerance: the fix computes
+    // their curves in the surface's parameters (on the same edges), and turns a loop that
+    // runs the wrong way round.
+    ShapeFix_Face fix(maker.Face());
+    fix.FixAddNaturalBoundMode() = false;
+    fix.Perform();
+    const TopoDS_Face rebuilt = fix.Face();
+    return TopoDS_Shape(rebuilt);
   });
   shapes_->bindTree(2, tag, face);
 }
