@@ -110,6 +110,10 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
         geo.addSurfaceLoop(tag, tags);
       else
         geo.addCurveLoop(tag, tags);
+    } else if (w == Words{"BSpline", "Surface"} || w == Words{"Bezier", "Surface"}) {
+      requireCount(1, "one curve loop");
+      if (SolidModeling* solids = solidModeling(joined(w), where))
+        solids->addCurveFilling(tag, tags[0], w[0] == "Bezier");
     } else if (w == Words{"Plane", "Surface"}) {
       geo.addPlaneSurface(tag, tags);
     } else if (w.back() == "Surface") {

@@ -56,6 +56,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
   void addFillingSurface(int tag, std::vector<int> curveLoops,
                          const std::vector<int>& through) override;
+  void addCurveFilling(int tag, int curveLoop, bool bezier) override;
   void addSurfaceLoop(int tag, std::vector<int> surfaces) override;
   void addVolume(int tag, std::vector<int> surfaceLoops) override;
   // MeshSize{points} = size: the prescribed mesh size at the points.
