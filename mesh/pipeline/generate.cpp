@@ -232,7 +232,11 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
         log.warning("Mesh.Algorithm3D " + why + ": volumes are meshed with " + volume.title +
                     " (" + std::to_string(volume.code) + ")");
       warned = true;
-      volume.mesh(model, options, entry.first, mesh);
+      const EntityId where{3, entry.first};
+      InteriorSize interiorSize;
+      if (fields.hasBackground())
+        interiorSize = [&fields, where](Vec3 p) { return fields.at(p, where); };
+      volume.mesh(model, options, entry.first, interiorSize, mesh);
     }
     extruded.meshVolumes(mesh);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
