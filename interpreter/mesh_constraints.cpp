@@ -118,6 +118,20 @@ void Interpreter::defineTransfiniteSurface(const ast::CommandStmt& command,
     session_.model().meshConstraints().transfiniteSurfaces[std::abs(tag)] = surface;
 }
 
+// Transfinite Volume{tags} <= {8 corners}>;
+void Interpreter::defineTransfiniteVolume(const ast::CommandStmt& command,
+                                          const SourceLocation& where) {
+  if (!command.shape || !command.tail.empty()) return unsupportedStatement(command, where);
+  std::vector<int> corners;
+  if (command.value) corners = entityTags(*command.value);
+  if (!corners.empty() && corners.size() != 8)
+    fail(command.value->loc, "Transfinite Volume takes 8 corner points, not " +
+                                 std::to_string(corners.size()));
+  for (int& corner : corners) corner = std::abs(corner);
+  for (int tag : shapeTags(*command.shape, 3))
+    session_.model().meshConstraints().transfiniteVolumes[std::abs(tag)] = corners;
+}
+
 bool Interpreter::executeFieldOption(const ast::OptionAssignStmt& assign,
                                      const SourceLocation& where) {
   if (!assign.path.starts_with("Field.") || !assign.index) return false;

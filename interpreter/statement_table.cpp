@@ -159,6 +159,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Transfinite Curve", &Interpreter::defineTransfiniteCurve},
       {"Transfinite Line", &Interpreter::defineTransfiniteCurve},
       {"Transfinite Surface", &Interpreter::defineTransfiniteSurface},
+      {"Transfinite Volume", &Interpreter::defineTransfiniteVolume},
       {"Translate", &Interpreter::executeShapeOperation},
       {"View ...", &Interpreter::skipInBatch},
       {"Volume", &Interpreter::defineEntity},

@@ -81,6 +81,8 @@ struct SizeFieldDefinition {
 struct MeshConstraints {
   std::map<int, TransfiniteCurve> transfiniteCurves = {};
   std::map<int, TransfiniteSurface> transfiniteSurfaces = {};
+  // Transfinite Volume{t} = {8 corners}: tag -> corners (empty: found from the volume's shape).
+  std::map<int, std::vector<int>> transfiniteVolumes = {};
   std::map<int, double> recombinedSurfaces = {};  // tag -> Recombine Surface{t} = angle (deg)
   std::map<int, int> surfaceAlgorithms = {};      // tag -> MeshAlgorithm Surface{t} = n
   std::map<int, SizeFieldDefinition> sizeFields = {};

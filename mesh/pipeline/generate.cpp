@@ -13,6 +13,7 @@
 #include "mesh/sizes/size_field.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/structured/periodic.h"
+#include "mesh/structured/transfinite_volume.h"
 #include "mesh/quads/recombine.h"
 #include "mesh/sizes/size_rules.h"
 #include "mesh/quads/subdivision.h"
@@ -86,12 +87,21 @@ struct SurfaceStage {
   MessageSink& log;
 };
 
+// Whether every volume the surface bounds is a Transfinite Volume (meshed with hexahedra).
+bool boundsOnlyTransfiniteVolumes(const Model& model, int tag) {
+  const auto& transfinite = model.meshConstraints().transfiniteVolumes;
+  const std::vector<int> volumes = model.upward({2, tag});
+  return std::all_of(volumes.begin(), volumes.end(),
+                     [&](int v) { return transfinite.contains(v); });
+}
+
 // Quadrangles on the boundary of a volume would leave the tetrahedral mesher without a
 // closed triangulated shell: recombination is skipped there, with a warning.
 std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
   std::optional<double> angle = recombinationAngle(stage.model, stage.options, tag);
   if (angle && stage.dim >= 3 && !stage.model.upward({2, tag}).empty() &&
-      !boundsOnlyRecombinedExtrusions(stage.model, tag)) {
+      !boundsOnlyRecombinedExtrusions(stage.model, tag) &&
+      !boundsOnlyTransfiniteVolumes(stage.model, tag)) {
     stage.log.warning("surface " + std::to_string(tag) +
                       " bounds a volume meshed with tetrahedra: it is not recombined");
     angle.reset();
@@ -228,6 +238,13 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     bool warned = why.empty();
     for (const auto& entry : model.volumes()) {
       if (extruded.meshesVolume(entry.first)) continue;
+      const auto& transfinite = model.meshConstraints().transfiniteVolumes;
+      if (const auto it = transfinite.find(entry.first); it != transfinite.end()) {
+        const std::string why = meshTransfiniteVolume(model, entry.first, it->second, mesh);
+        if (why.empty()) continue;
+        log.warning("Transfinite Volume " + std::to_string(entry.first) + ": " + why +
+                    "; meshed with tetrahedra");
+      }
       if (!warned)
         log.warning("Mesh.Algorithm3D " + why + ": volumes are meshed with " + volume.title +
                     " (" + std::to_string(volume.code) + ")");
