@@ -144,6 +144,9 @@ class Interpreter {
   std::vector<EntityId> roundedShapes(const ast::Expr& shape);
   void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
+  void executeHealShapes(const ast::CommandStmt& command, const SourceLocation& where);
+  SolidModeling::HealingOptions healingOptions() const;
+  void applyImportOptions(SolidModeling& solids) const;
   std::vector<EntityId> closestShapes(const ast::Expr& shape);
   std::vector<EntityId> extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);

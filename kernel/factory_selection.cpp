@@ -2,6 +2,9 @@
 // (kernel/occ).
 #include "kernel/factory_selection.h"
 
+#include <filesystem>
+#include <ostream>
+
 #include "kernel/geo/geo_factory.h"
 #include "kernel/occ/occ_factory.h"
 
@@ -46,6 +49,16 @@ void FactorySelection::synchronize(Model& model) const {
 void FactorySelection::clear() {
   factories_->builtIn.clear();
   factories_->occ.clear();
+}
+
+void FactorySelection::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks,
+                                     const std::string& cadPath) const {
+  if (factories_->occ.hasShapes()) {
+    factories_->occ.exportShapes(cadPath);
+    out << "Merge \"" << std::filesystem::path(cadPath).filename().string() << "\";\n";
+    factories_->occ.writeUnrolled(out, hooks);
+  }
+  factories_->builtIn.writeUnrolled(out, hooks);
 }
 
 bool FactorySelection::hasEntities() const {

@@ -1,6 +1,8 @@
 // The OpenCASCADE factory's mesh constraints on its entities: periodicity, embedding,
 // compounds. They are recorded by tag and exported with the entities.
 #include <cmath>
+#include <cstdio>
+#include <ostream>
 #include <string>
 
 #include "kernel/geometry_error.h"
@@ -13,6 +15,35 @@ namespace {
 
 void append(std::vector<int>& to, const std::vector<int>& tags) {
   for (int t : tags) to.push_back(std::abs(t));
+}
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.16g", x);
+  return text;
+}
+
+std::string braced(const std::vector<int>& tags) {
+  std::string text = "{";
+  for (std::size_t i = 0; i < tags.size(); ++i) text += (i ? ", " : "") + std::to_string(tags[i]);
+  return text + "}";
+}
+
+// "Point{5, 6} In Surface{1};", "Compound Curve{2, 3};", "Periodic Surface{2} = {1} Affine{..};"
+void writeConstraints(EntityId e, const OccShapes::Constraints& c, std::ostream& out) {
+  for (int dim = 0; dim < e.dim; ++dim)
+    if (!c.embedded[dim].empty())
+      out << entityKind(dim) << braced(c.embedded[dim]) << " In " << entityKind(e.dim) << "{"
+          << e.tag << "};\n";
+  if (!c.compound.empty() && c.compound.front() == e.tag)
+    out << "Compound " << entityKind(e.dim) << braced(c.compound) << ";\n";
+  if (c.periodic) {
+    out << "Periodic " << entityKind(e.dim) << "{" << e.tag << "} = {" << c.periodic->master
+        << "} Affine{";
+    for (std::size_t i = 0; i < c.periodic->affine.size(); ++i)
+      out << (i ? ", " : "") << number(c.periodic->affine[i]);
+    out << "};\n";
+  }
 }
 
 }  // namespace
@@ -50,6 +81,21 @@ void OccFactory::addCompound(int dim, const std::vector<int>& tags) {
     compound.clear();
     append(compound, tags);
   }
+}
+
+// After the line merging the shapes' XAO file: the sizes at points, then for each curve,
+// surface and volume its embedded entities, compound and periodicity, and the hooks' lines.
+void OccFactory::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks) const {
+  for (const auto& [tag, size] : meshSizes_)
+    if (size > 0 && shapes_->contains(0, tag))
+      out << "MeshSize{" << tag << "} = " << number(size) << ";\n";
+  for (int dim = 1; dim <= 3; ++dim)
+    for (const auto& entry : shapes_->byTag[dim]) {
+      const EntityId e{dim, entry.first};
+      if (auto c = shapes_->constraints.find(e); c != shapes_->constraints.end())
+        writeConstraints(e, c->second, out);
+      if (hooks.afterEntity) hooks.afterEntity(e, out);
+    }
 }
 
 // Copies the constraints recorded on the model's entities of this factory.

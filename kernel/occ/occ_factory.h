@@ -22,7 +22,7 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 // tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
 // GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
 // Not offered yet (handed to the built-in factory): the older form of Periodic Surface,
-// physical groups and Geometry.Tolerance (kept by the built-in factory), the unrolled .geo.
+// physical groups and Geometry.Tolerance (kept by the built-in factory).
 class OccFactory final : public GeometryFactory, public SolidModeling {
  public:
   OccFactory();
@@ -123,9 +123,24 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   // ShapeFromFile("x.step"), Merge "x.step" (kernel/occ/occ_import.cpp): the shapes of a
   // STEP, IGES or BREP file, with new tags; returns those of the highest dimension. A missing
   // or unreadable file is a GeometryError naming the path.
-  std::vector<EntityId> importShapes(const std::string& path) override;
-  // Save "x.brep" / "x.step": every entity that is not part of another one.
+  // Read with the import options (scaling, target unit, healing). A .xao file written by
+  // exportShapes gives every entity its tag back; one written elsewhere is read as a BREP.
+  std::vector<EntityId> importShapes(const std::string& path,
+                                     bool allDimensions = false) override;
+  // Save "x.brep" / "x.step" / "x.xao": every entity that is not part of another one (the XAO
+  // file, written atomically, also lists every entity with its tag).
   void exportShapes(const std::string& path) const override;
+  void setImportOptions(const ImportOptions& options) override { importOptions_ = options; }
+  bool hasShapes() const override;
+
+  // HealShapes (kernel/occ/occ_healing.cpp).
+  std::vector<EntityId> healShapes(const std::vector<EntityId>& shapes,
+                                   const HealingOptions& options) override;
+
+  // The unrolled script's lines for this factory's entities, after the line merging their
+  // XAO file: mesh sizes at points, then the hooks' constraints of each curve, surface and
+  // volume.
+  void writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks) const override;
 
   // Mesh constraints on its entities (kernel/occ/occ_constraints.cpp), recorded by tag as the
   // built-in factory records them on its own.
@@ -170,6 +185,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   std::map<int, double> meshSizes_;  // at points
   BooleanOptions booleanOptions_;
   std::vector<Replacement> replacements_;  // of the last Boolean
+  ImportOptions importOptions_;
 
   int primitiveTag(int dim, int tag, const char* what) const;
   void addChain(int tag, const std::vector<int>& curves, bool closed);

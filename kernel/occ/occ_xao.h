@@ -1,0 +1,35 @@
+// XAO files of the OpenCASCADE factory: the shape as BREP text inside XML, with its entities.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+#include <vector>
+
+#include "kernel/occ/occ_shapes.h"
+
+namespace geomesh {
+
+// An entity an XAO file lists: its dimension, its sub-shape and, when geomesh wrote the file,
+// its tag (0 otherwise).
+struct XaoEntity {
+  int dim;
+  int tag;
+  TopoDS_Shape shape;
+};
+
+struct XaoContents {
+  TopoDS_Shape shape;
+  std::vector<XaoEntity> entities;
+};
+
+// Writes `compound` (holding every bound shape) as an XAO file: the BREP text in a CDATA
+// section, then the vertices, edges, faces and solids, each naming its sub-shape by its index
+// among the compound's sub-shapes (as XAO does) and carrying its tag. Written to a temporary
+// file renamed at the end, so that a failure leaves no partial file behind.
+void writeXao(const OccShapes& shapes, const TopoDS_Shape& compound, const std::string& path);
+
+// Reads an XAO file; throws GeometryError naming the path when it is not one.
+XaoContents readXao(const std::string& path);
+
+}  // namespace geomesh
