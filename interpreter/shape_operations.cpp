@@ -38,7 +38,7 @@ int Interpreter::entityDimension(const std::vector<std::string>& words) {
   return -1;
 }
 
-std::vector<int> Interpreter::allTags(int dim) const { return session_.factory().tags(dim); }
+std::vector<int> Interpreter::allTags(int dim) const { return session_.factories().tags(dim); }
 
 // The tags of Point{..}, Curve{..}, ... with ':' standing for every entity of the kind.
 std::vector<int> Interpreter::shapeTags(const ast::Expr& shape, int dim) {

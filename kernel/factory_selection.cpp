@@ -55,11 +55,15 @@ void FactorySelection::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& 
                                      const std::string& cadPath) const {
   if (factories_->occ.hasShapes()) {
     factories_->occ.exportShapes(cadPath);
+    // The factory first, so that the statements after the merge (MeshSize, ...) reach it.
+    out << "SetFactory(\"OpenCASCADE\");\n";
     out << "Merge \"" << std::filesystem::path(cadPath).filename().string() << "\";\n";
     factories_->occ.writeUnrolled(out, hooks);
   }
   factories_->builtIn.writeUnrolled(out, hooks);
 }
+
+std::vector<int> FactorySelection::tags(int dim) const { return factories_->occFirst.tags(dim); }
 
 bool FactorySelection::hasEntities() const {
   for (int dim = 0; dim <= 3; ++dim)

@@ -3,8 +3,12 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <gp_Pnt.hxx>
 
 #include <cstdio>
 #include <filesystem>
@@ -26,15 +30,59 @@ std::string geometryName(const std::string& path) {
   return file.substr(0, file.find('.'));
 }
 
+// The value of attribute `name` in the element text `element`, or "" when absent.
+std::string attribute(const std::string& element, const std::string& name) {
+  const std::string key = " " + name + "=\"";
+  const std::size_t at = element.find(key);
+  if (at == std::string::npos) return "";
+  const std::size_t begin = at + key.size();
+  const std::size_t end = element.find('"', begin);
+  return end == std::string::npos ? "" : element.substr(begin, end - begin);
+}
+
+// A vertex's point to the last bit: the BREP text keeps 15 digits of it only.
+std::string exactPoint(const TopoDS_Shape& vertex) {
+  const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertex));
+  char text[96];
+  std::snprintf(text, sizeof text, "%.17g %.17g %.17g", p.X(), p.Y(), p.Z());
+  return text;
+}
+
+// An edge's parameter range to the last bit, for the same reason.
+std::string exactRange(const TopoDS_Shape& edge) {
+  double first = 0, last = 0;
+  BRep_Tool::Range(TopoDS::Edge(edge), first, last);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g %.17g", first, last);
+  return text;
+}
+
+// Puts back the exact points of the vertices and ranges of the edges that list them.
+void restoreExactValues(const XaoEntity& e, const std::string& element) {
+  double x = 0, y = 0, z = 0;
+  if (e.dim == 0 &&
+      std::sscanf(attribute(element, "coordinates").c_str(), "%lf %lf %lf", &x, &y, &z) == 3) {
+    const TopoDS_Vertex vertex = TopoDS::Vertex(e.shape);
+    BRep_Builder().UpdateVertex(vertex, gp_Pnt(x, y, z), BRep_Tool::Tolerance(vertex));
+  }
+  if (e.dim == 1 && std::sscanf(attribute(element, "range").c_str(), "%lf %lf", &x, &y) == 2 &&
+      !BRep_Tool::Degenerated(TopoDS::Edge(e.shape)))
+    BRep_Builder().Range(TopoDS::Edge(e.shape), x, y);
+}
+
 void writeTopology(const OccShapes& shapes, const TopTools_IndexedMapOfShape& all,
                    std::ostream& out) {
   out << "    <topology>\n";
   for (int dim = 0; dim <= 3; ++dim) {
     out << "      <" << kLists[dim] << " count=\"" << shapes.byTag[dim].size() << "\">\n";
     int index = 0;
-    for (const auto& [tag, shape] : shapes.byTag[dim])
+    for (const auto& [tag, shape] : shapes.byTag[dim]) {
       out << "        <" << kElements[dim] << " index=\"" << index++ << "\" name=\"\" reference=\""
-          << all.FindIndex(shape) << "\" tag=\"" << tag << "\"/>\n";
+          << all.FindIndex(shape) << "\" tag=\"" << tag << "\"";
+      if (dim == 0) out << " coordinates=\"" << exactPoint(shape) << "\"";
+      if (dim == 1) out << " range=\"" << exactRange(shape) << "\"";
+      out << "/>\n";
+    }
     out << "      </" << kLists[dim] << ">\n";
   }
   out << "    </topology>\n";
@@ -48,20 +96,11 @@ void writeDocument(const OccShapes& shapes, const TopoDS_Shape& compound, const 
       << "<XAO version=\"1.0\" author=\"geomesh\">\n"
       << "  <geometry name=\"" << geometryName(path) << "\">\n"
       << "    <shape format=\"BREP\"><![CDATA[";
-  BRepTools::Write(compound, out);
+  // Version 1 of the BREP text, without triangulations: what every OpenCASCADE release reads.
+  BRepTools::Write(compound, out, false, false, TopTools_FormatVersion_VERSION_1);
   out << "]]></shape>\n";
   writeTopology(shapes, all, out);
   out << "  </geometry>\n  <groups count=\"0\">\n  </groups>\n  <fields count=\"0\"/>\n</XAO>\n";
-}
-
-// The value of attribute `name` in the element text `element`, or "" when absent.
-std::string attribute(const std::string& element, const std::string& name) {
-  const std::string key = " " + name + "=\"";
-  const std::size_t at = element.find(key);
-  if (at == std::string::npos) return "";
-  const std::size_t begin = at + key.size();
-  const std::size_t end = element.find('"', begin);
-  return end == std::string::npos ? "" : element.substr(begin, end - begin);
 }
 
 int integer(const std::string& text) {
@@ -87,6 +126,7 @@ std::vector<XaoEntity> readTopology(const std::string& text, const TopTools_Inde
         throw GeometryError("'" + path + "': an XAO " + kElements[dim] +
                             " names no sub-shape of the BREP shape");
       entities.push_back({dim, integer(attribute(element, "tag")), all.FindKey(reference)});
+      restoreExactValues(entities.back(), element);
     }
   }
   return entities;

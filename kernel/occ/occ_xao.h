@@ -25,11 +25,13 @@ struct XaoContents {
 
 // Writes `compound` (holding every bound shape) as an XAO file: the BREP text in a CDATA
 // section, then the vertices, edges, faces and solids, each naming its sub-shape by its index
-// among the compound's sub-shapes (as XAO does) and carrying its tag. Written to a temporary
+// among the compound's sub-shapes (as XAO does) and carrying its tag (and a vertex its exact
+// point: the BREP text rounds it to 15 digits). Written to a temporary
 // file renamed at the end, so that a failure leaves no partial file behind.
 void writeXao(const OccShapes& shapes, const TopoDS_Shape& compound, const std::string& path);
 
-// Reads an XAO file; throws GeometryError naming the path when it is not one.
+// Reads an XAO file (vertices listing their exact point get it back); throws GeometryError
+// naming the path when it is not one.
 XaoContents readXao(const std::string& path);
 
 }  // namespace geomesh
