@@ -157,6 +157,29 @@ TEST(OccStatements, ErrorsPointAtTheStatementWithTheReason) {
             "test.geo:2:1: error: Volume 1 is not defined");
 }
 
+// HealShapes; heals everything and renumbers from 1; HealShapes{..} (beyond the reference)
+// heals the shapes given; the options are the Geometry.OCC* healing options.
+TEST(OccStatements, HealShapes) {
+  EXPECT_EQ(printed(kOcc + "Box(5) = {0, 0, 0, 1, 1, 1};\nSphere(9) = {3, 0, 0, 0.5};\n"
+                    "HealShapes;\nv() = Volume{:}; c() = Curve{:};\n"
+                    "Printf(\"%g %g %g\", v(0), v(1), #c());\n"
+                    "Geometry.OCCFixSmallEdges = 1;\nHealShapes{ Volume{2}; }\n"
+                    "v() = Volume{:}; c() = Curve{:};\n"
+                    "Printf(\"%g %g %g\", v(0), v(1), #c());\n"),
+            "1 2 15\n1 2 13\n");  // the sphere, of the largest tag, takes it again
+  ScriptRun builtIn;
+  builtIn.run("Point(1) = {0, 0, 0};\nHealShapes;\n");
+  ASSERT_EQ(builtIn.log.warnings.size(), 1u);
+  EXPECT_NE(builtIn.log.warnings[0].find("needs SetFactory(\"OpenCASCADE\")"), std::string::npos);
+  EXPECT_EQ(firstLineOf(kOcc + "HealShapes{ Volume{4}; }\n"),
+            "test.geo:2:1: error: Volume 4 is not defined");
+  EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                               "Geometry.OCCTargetUnit = \"LY\";\n"
+                               "v() = ShapeFromFile(\"/no/such/part.step\");\n")
+                .rfind("test.geo:4:7: error:", 0),
+            0u);
+}
+
 TEST(OccStatements, BuiltInEntitiesAreRefusedByOpenCascadeOperations) {
   const std::string message =
       firstLineOf("Point(100) = {0, 0, 0};\nSetFactory(\"OpenCASCADE\");\n"
