@@ -380,19 +380,27 @@ std::vector<EntityId> Interpreter::closestShapes(const ast::Expr& shape) {
   }
 }
 
-// Extrude{ Surface{..}; } Using Wire{w}: a pipe.
+// Extrude{ Surface{..}; } Using Wire{w}: a pipe, as a statement.
 std::vector<EntityId> Interpreter::extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire) {
-  if (shape.words != Words{"Extrude"} || shape.parts.size() != 1 || !shape.parts[0].isBlock)
+  if (shape.words != Words{"Extrude"} || shape.parts.size() != 1 || !shape.parts[0].isBlock ||
+      wire.parts.size() != 1)
     fail(shape.loc, "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
-  const std::vector<EntityId> shapes = shapesIn(shape.parts[0]);
-  const std::vector<double> wires = shapeArguments(wire);
-  if (wires.size() != 1) fail(wire.loc, "Using Wire takes one wire, as in Using Wire{2}");
-  SolidModeling* solids = solidModeling("Extrude Using Wire", shape.loc);
+  return pipe(shape.parts[0], wire.parts[0], shape.loc, wire.loc);
+}
+
+// The shapes of `block` swept along the wire `wire` names.
+std::vector<EntityId> Interpreter::pipe(const ast::ShapePart& block, const ast::ShapePart& wire,
+                                        const SourceLocation& where,
+                                        const SourceLocation& wireWhere) {
+  const std::vector<EntityId> shapes = shapesIn(block);
+  const std::vector<double> wires = evaluateNumbers(wire.items);
+  if (wires.size() != 1) fail(wireWhere, "Using Wire takes one wire, as in Using Wire{2}");
+  SolidModeling* solids = solidModeling("Extrude Using Wire", where);
   if (!solids) return {};
   try {
     return solids->extrudeAlongWire(shapes, clampedInteger<int>(wires[0]));
   } catch (const GeometryError& error) {
-    fail(shape.loc, error.what());
+    fail(where, error.what());
   }
 }
 
@@ -400,6 +408,11 @@ std::vector<EntityId> Interpreter::extrudeAlongWire(const ast::Expr& shape, cons
 std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr& shape) {
   const std::string& word = shape.words[0];
   if (word == "Closest") return closestShapes(shape);
+  if (shape.words == Words{"Extrude", "Using Wire"}) {  // out[] = Extrude{..} Using Wire{w};
+    if (shape.parts.size() != 2 || !shape.parts[0].isBlock)
+      fail(shape.loc, "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
+    return pipe(shape.parts[0], shape.parts[1], shape.loc, shape.loc);
+  }
   if (word.rfind("Boolean", 0) == 0) return booleanShapes(word, shape.parts, -1, shape.loc);
   if (word == "Fillet" || word == "Chamfer") return roundedShapes(shape);
   if (word == "ShapeFromFile") return shapesFromFile(shape);

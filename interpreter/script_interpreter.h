@@ -149,6 +149,8 @@ class Interpreter {
   void applyImportOptions(SolidModeling& solids) const;
   std::vector<EntityId> closestShapes(const ast::Expr& shape);
   std::vector<EntityId> extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire);
+  std::vector<EntityId> pipe(const ast::ShapePart& block, const ast::ShapePart& wire,
+                             const SourceLocation& where, const SourceLocation& wireWhere);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
   void mergeCadFile(const std::string& file, const SourceLocation& where);
   void saveCadFile(const std::string& path, const SourceLocation& where);
