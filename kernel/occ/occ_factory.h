@@ -21,8 +21,8 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 // Tags follow Gmsh's OpenCASCADE kernel: a shape's sub-shapes not known yet get the next free
 // tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
 // GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
-// Not offered yet (handed to the built-in factory): the older form of Periodic Surface,
-// physical groups and Geometry.Tolerance (kept by the built-in factory).
+// Not offered (handed to the built-in factory): physical groups and Geometry.Tolerance (kept
+// by the built-in factory).
 class OccFactory final : public GeometryFactory, public SolidModeling {
  public:
   OccFactory();
@@ -146,6 +146,10 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   // built-in factory records them on its own.
   void setPeriodic(int dim, const std::vector<int>& slaves, const std::vector<int>& masters,
                    const AffineMap& map) override;
+  // Periodic Surface s {curves} = m {curves}: the rigid motion taking the master's curves
+  // onto the slave's (whichever way each curve runs).
+  void setPeriodicByCurves(int slave, const std::vector<int>& slaveCurves, int master,
+                           const std::vector<int>& masterCurves) override;
   void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag) override;
   void addCompound(int dim, const std::vector<int>& tags) override;
 

@@ -180,6 +180,26 @@ TEST(OccStatements, HealShapes) {
             0u);
 }
 
+// The older form of Periodic Surface on OpenCASCADE surfaces: the translation follows from
+// the curves, whichever way each runs; curves that match no rigid motion are an error.
+TEST(OccStatements, PeriodicSurfaceByCurves) {
+  ScriptRun run;
+  run.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nPeriodic Surface 2 {5, 8, 7, 6} = 1 {1, 4, 3, 2};\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  run.session.synchronize();
+  const ModelSurface* slave = run.session.model().surface(2);
+  ASSERT_TRUE(slave && slave->periodic);
+  EXPECT_EQ(slave->periodic->master, 1);
+  const std::vector<double> translation{1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  ASSERT_EQ(slave->periodic->affine.size(), 16u);
+  for (std::size_t i = 0; i < 16; ++i)
+    EXPECT_NEAR(slave->periodic->affine[i], translation[i], 1e-12) << i;
+  EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                               "Periodic Surface 2 {5, 8, 7, 6} = 1 {1, 9, 3, 2};\n"),
+            "test.geo:3:1: error: Periodic Surface 2: its curves are not the image of those of "
+            "surface 1 by a translation or a rotation");
+}
+
 TEST(OccStatements, BuiltInEntitiesAreRefusedByOpenCascadeOperations) {
   const std::string message =
       firstLineOf("Point(100) = {0, 0, 0};\nSetFactory(\"OpenCASCADE\");\n"
