@@ -6,6 +6,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +26,13 @@ namespace {
 
 void append(std::vector<int>& to, const std::vector<int>& tags) {
   for (int t : tags) to.push_back(std::abs(t));
+}
+
+// `recorded` after what the entity already embeds (its internal points), without repeats.
+std::vector<int> merged(std::vector<int> present, const std::vector<int>& recorded) {
+  for (int t : recorded)
+    if (std::find(present.begin(), present.end(), t) == present.end()) present.push_back(t);
+  return present;
 }
 
 std::string number(double x) {
@@ -187,7 +195,7 @@ void applyConstraints(const OccShapes& shapes, Model& model) {
       if (!surface) continue;
       ModelSurface updated = *surface;
       updated.periodic = c.periodic;
-      updated.embeddedPoints = c.embedded[0];
+      updated.embeddedPoints = merged(updated.embeddedPoints, c.embedded[0]);
       updated.embeddedCurves = c.embedded[1];
       updated.compound = c.compound;
       model.addSurface(std::move(updated));
@@ -195,7 +203,7 @@ void applyConstraints(const OccShapes& shapes, Model& model) {
       const ModelVolume* volume = model.volume(e.tag);
       if (!volume) continue;
       ModelVolume updated = *volume;
-      updated.embeddedPoints = c.embedded[0];
+      updated.embeddedPoints = merged(updated.embeddedPoints, c.embedded[0]);
       updated.embeddedCurves = c.embedded[1];
       updated.embeddedSurfaces = c.embedded[2];
       model.addVolume(std::move(updated));

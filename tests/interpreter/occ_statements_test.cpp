@@ -200,6 +200,31 @@ TEST(OccStatements, PeriodicSurfaceByCurves) {
             "surface 1 by a translation or a rotation");
 }
 
+// Points fragmented with a surface and a volume are embedded in them (or in the face they lie
+// on) and keep their tags; a point outside stays free.
+TEST(OccStatements, FragmentsOfPointsEmbedThem) {
+  ScriptRun run;
+  run.run(kOcc + "Rectangle(1) = {0, 0, 0, 1, 1};\nPoint(10) = {0.5, 0.5, 0};\n"
+                 "Point(11) = {0.2, 0.7, 0};\nPoint(12) = {3, 3, 3};\n"
+                 "r() = BooleanFragments{ Surface{1}; Delete; }{ Point{10, 11, 12}; Delete; };\n"
+                 "Box(5) = {5, 0, 0, 1, 1, 1};\nPoint(30) = {5.5, 0.5, 0.5};\n"
+                 "Point(31) = {5.25, 0.5, 1};\n"
+                 "q() = BooleanFragments{ Volume{5}; Delete; }{ Point{30, 31}; Delete; };\n"
+                 "Printf(\"%g %g %g %g\", #r(), r(0), r(1), #q());\n");
+  EXPECT_EQ(run.out.str(), "2 1 12 1\n");
+  run.session.synchronize();
+  const Model& model = run.session.model();
+  std::vector<int> inSurface = model.surface(1)->embeddedPoints;
+  std::sort(inSurface.begin(), inSurface.end());
+  EXPECT_EQ(inSurface, (std::vector<int>{10, 11}));
+  EXPECT_EQ(model.volume(5)->embeddedPoints, std::vector<int>{30});
+  int onFace = 0;
+  for (const auto& [tag, surface] : model.surfaces())
+    if (surface.embeddedPoints == std::vector<int>{31}) onFace = tag;
+  EXPECT_NE(onFace, 0) << "point 31 is embedded in no face of the box";
+  EXPECT_TRUE(model.points().contains(12));
+}
+
 TEST(OccStatements, BuiltInEntitiesAreRefusedByOpenCascadeOperations) {
   const std::string message =
       firstLineOf("Point(100) = {0, 0, 0};\nSetFactory(\"OpenCASCADE\");\n"
