@@ -420,7 +420,8 @@ std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr
 }
 
 // Merge "part.step": the file's shapes (of every dimension) join the OpenCASCADE model,
-// whichever factory is selected, as in the reference.
+// whichever factory is selected, and an XAO file's groups become physical groups, as in the
+// reference.
 void Interpreter::mergeCadFile(const std::string& file, const SourceLocation& where) {
   std::filesystem::path path = file;
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
@@ -429,6 +430,8 @@ void Interpreter::mergeCadFile(const std::string& file, const SourceLocation& wh
     applyImportOptions(solids);
     for (const EntityId& e : solids.importShapes(path.lexically_normal().string(), true))
       session_.recordOrigin(e, where);
+    for (const PhysicalGroup& g : solids.importedGroups())  // an XAO file's groups
+      session_.factory().addPhysicalGroup(g.dim, g.tag, g.name, g.entities);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }

@@ -125,6 +125,9 @@ class SolidModeling {
   virtual std::vector<EntityId> importShapes(const std::string& path,
                                              bool allDimensions = false) = 0;
   virtual void exportShapes(const std::string& path) const = 0;
+  // The groups the last file read lists (an XAO file's <groups>), by the tags their entities
+  // got: Merge makes them physical groups, as the reference does.
+  virtual const std::vector<PhysicalGroup>& importedGroups() const = 0;
   // Whether the modeler holds any shape.
   virtual bool hasShapes() const = 0;
 };

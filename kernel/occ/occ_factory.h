@@ -131,6 +131,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   // file, written atomically, also lists every entity with its tag).
   void exportShapes(const std::string& path) const override;
   void setImportOptions(const ImportOptions& options) override { importOptions_ = options; }
+  const std::vector<PhysicalGroup>& importedGroups() const override { return importedGroups_; }
   bool hasShapes() const override;
 
   // HealShapes (kernel/occ/occ_healing.cpp).
@@ -190,6 +191,7 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   BooleanOptions booleanOptions_;
   std::vector<Replacement> replacements_;  // of the last Boolean
   ImportOptions importOptions_;
+  std::vector<PhysicalGroup> importedGroups_;  // of the last file read
 
   int primitiveTag(int dim, int tag, const char* what) const;
   void addChain(int tag, const std::vector<int>& curves, bool closed);

@@ -123,6 +123,18 @@ std::optional<std::vector<EntityId>> bindTagged(OccShapes& shapes, const XaoCont
   return out;
 }
 
+// An XAO file's groups, by the tags their elements got (elements left unbound are dropped).
+std::vector<PhysicalGroup> groupsByTag(const OccShapes& shapes, const std::vector<XaoGroup>& groups) {
+  std::vector<PhysicalGroup> out;
+  for (const XaoGroup& g : groups) {
+    PhysicalGroup group{g.dim, g.tag, g.name, {}};
+    for (const TopoDS_Shape& e : g.elements)
+      if (shapes.isBound(g.dim, e)) group.entities.push_back(shapes.tagOf(g.dim, e));
+    if (group.tag > 0) out.push_back(std::move(group));
+  }
+  return out;
+}
+
 }  // namespace
 
 // The shapes of the highest dimension the file holds get new tags, in the file's order; as in
@@ -131,11 +143,15 @@ std::optional<std::vector<EntityId>> bindTagged(OccShapes& shapes, const XaoCont
 // them is taken and the shape is neither scaled nor healed.
 std::vector<EntityId> OccFactory::importShapes(const std::string& path, bool allDimensions) {
   quietExchange();
+  importedGroups_.clear();
   const std::string what = "importing '" + path + "'";
   if (lowerExtension(path) == ".xao" && importOptions_.scaling == 1 &&
       !importOptions_.healing.any()) {
     const XaoContents xao = guarded(what, [&] { return readXao(path); });
-    if (std::optional<std::vector<EntityId>> tagged = bindTagged(*shapes_, xao)) return *tagged;
+    std::optional<std::vector<EntityId>> bound = bindTagged(*shapes_, xao);
+    if (!bound) bound = bindShapes(*shapes_, xao.shape, allDimensions);
+    importedGroups_ = groupsByTag(*shapes_, xao.groups);
+    return *bound;
   }
   const TopoDS_Shape shape = guarded(what, [&] {
     TopoDS_Shape read = scaled(readShape(path, importOptions_.targetUnit), importOptions_.scaling);

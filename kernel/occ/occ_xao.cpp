@@ -132,6 +132,36 @@ std::vector<XaoEntity> readTopology(const std::string& text, const TopTools_Inde
   return entities;
 }
 
+// The <group> elements: dimension, tag, name and elements, each element an index into the
+// topology's list of that dimension.
+std::vector<XaoGroup> readGroups(const std::string& text, const std::vector<XaoEntity>& entities) {
+  std::vector<const XaoEntity*> byIndex[4];
+  for (const XaoEntity& e : entities) byIndex[e.dim].push_back(&e);
+  std::vector<XaoGroup> groups;
+  for (std::size_t at = text.find("<group "); at != std::string::npos;
+       at = text.find("<group ", at + 1)) {
+    const std::size_t open = text.find('>', at);
+    const std::size_t close = text.find("</group>", at);
+    if (open == std::string::npos) break;
+    const std::string head = text.substr(at, open - at);
+    const std::string kind = attribute(head, "dimension");
+    int dim = -1;
+    for (int d = 0; d <= 3; ++d)
+      if (kind == kElements[d]) dim = d;
+    if (dim < 0) continue;
+    XaoGroup group{dim, integer(attribute(head, "tag")), attribute(head, "name"), {}};
+    const std::string body = text.substr(open, close == std::string::npos ? 0 : close - open);
+    for (std::size_t e = body.find("<element "); e != std::string::npos;
+         e = body.find("<element ", e + 1)) {
+      const int index = integer(attribute(body.substr(e, body.find('>', e) - e), "index"));
+      if (index >= 0 && static_cast<std::size_t>(index) < byIndex[dim].size())
+        group.elements.push_back(byIndex[dim][static_cast<std::size_t>(index)]->shape);
+    }
+    groups.push_back(std::move(group));
+  }
+  return groups;
+}
+
 }  // namespace
 
 void writeXao(const OccShapes& shapes, const TopoDS_Shape& compound, const std::string& path) {
@@ -178,6 +208,7 @@ XaoContents readXao(const std::string& path) {
   TopTools_IndexedMapOfShape all;
   TopExp::MapShapes(contents.shape, all);
   contents.entities = readTopology(text.substr(end), all, path);
+  contents.groups = readGroups(text.substr(end), contents.entities);
   return contents;
 }
 

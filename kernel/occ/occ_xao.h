@@ -18,9 +18,19 @@ struct XaoEntity {
   TopoDS_Shape shape;
 };
 
+// A group of entities of one dimension (<group dimension="face" tag="3" name="..">), its
+// elements given by their sub-shapes.
+struct XaoGroup {
+  int dim;
+  int tag;
+  std::string name;
+  std::vector<TopoDS_Shape> elements;
+};
+
 struct XaoContents {
   TopoDS_Shape shape;
   std::vector<XaoEntity> entities;
+  std::vector<XaoGroup> groups;
 };
 
 // Writes `compound` (holding every bound shape) as an XAO file: the BREP text in a CDATA
