@@ -210,8 +210,11 @@ TEST(OccStatements, FragmentsOfPointsEmbedThem) {
                  "Box(5) = {5, 0, 0, 1, 1, 1};\nPoint(30) = {5.5, 0.5, 0.5};\n"
                  "Point(31) = {5.25, 0.5, 1};\n"
                  "q() = BooleanFragments{ Volume{5}; Delete; }{ Point{30, 31}; Delete; };\n"
-                 "Printf(\"%g %g %g %g\", #r(), r(0), r(1), #q());\n");
-  EXPECT_EQ(run.out.str(), "2 1 12 1\n");
+                 "Printf(\"%g %g %g %g %g %g %g %g %g\", #r(), r(0), r(4), r(7), r(9), #q(), "
+                 "q(1), q(7), q(10));\n");
+  // The lists as the reference gives them: 1 1 2 3 4 10 11 12 10 11 (the surface, its new
+  // curves, the points, those inside it again) and 5 2 3 4 5 6 7 30 31 31 30.
+  EXPECT_EQ(run.out.str(), "10 1 4 12 11 11 2 30 30\n");
   run.session.synchronize();
   const Model& model = run.session.model();
   std::vector<int> inSurface = model.surface(1)->embeddedPoints;
