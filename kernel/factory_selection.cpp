@@ -59,6 +59,9 @@ void FactorySelection::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& 
     out << "SetFactory(\"OpenCASCADE\");\n";
     out << "Merge \"" << std::filesystem::path(cadPath).filename().string() << "\";\n";
     factories_->occ.writeUnrolled(out, hooks);
+    bool builtInEntities = false;
+    for (int dim = 0; dim <= 3; ++dim) builtInEntities |= factories_->builtIn.maxTag(dim) > 0;
+    if (builtInEntities) out << "SetFactory(\"Built-in\");\n";  // its entities stay its own
   }
   factories_->builtIn.writeUnrolled(out, hooks);
 }

@@ -96,5 +96,25 @@ TEST(OccUnrolled, RerunningTheUnrolledScriptGivesTheSameModelAndMesh) {
   fs::remove_all(dir);
 }
 
+// Built-in entities beside OpenCASCADE ones stay the built-in kernel's, with their tags.
+TEST(OccUnrolled, BuiltInEntitiesFollowTheMergedShapes) {
+  const fs::path dir = scratch::path("occ-unrolled-mixed");
+  fs::create_directories(dir);
+  const fs::path script = dir / "mixed.geo";
+  std::ofstream(script) << "SetFactory(\"OpenCASCADE\");\nBox(3) = {0, 0, 0, 1, 1, 1};\n"
+                           "SetFactory(\"Built-in\");\nPoint(50) = {9, 9, 9};\n"
+                           "Physical Volume(2) = {3};\n";
+  run({script.string(), "-0"});
+  std::ifstream in(dir / "mixed.geo_unrolled");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_GE(lines.size(), 5u);
+  EXPECT_EQ(lines[0], "SetFactory(\"OpenCASCADE\");");
+  EXPECT_EQ(lines[1], "Merge \"mixed.geo_unrolled.xao\";");
+  EXPECT_EQ(lines[2], "SetFactory(\"Built-in\");");
+  EXPECT_EQ(lines.back(), "Physical Volume(2) = {3};");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace geomesh
