@@ -9,6 +9,7 @@ run, and reports wall times, peak memory, mesh sizes, throughput and ratios.
 import argparse
 import json
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -24,7 +25,15 @@ CASES = {
     "square_uniform_small": ("square_uniform.geo", ["-2", "-setnumber", "lc", "0.01"], "2D"),
     "plate_holes": ("plate_holes.geo", ["-2"], "2D"),
     "many_points": ("many_points.geo", ["-0"], "script"),
+    # A STEP part against a built-in square of about the same triangle count: what meshing
+    # CAD surfaces costs over plane ones.
+    "cad_part": ("cad_part.geo", ["-2"], "2D"),
+    "square_like_cad_part": ("square_uniform.geo", ["-2", "-setnumber", "lc", "0.0035"], "2D"),
 }
+
+# Cases whose script reads a file that another script makes: (script, what it writes). Both
+# are copied to the work directory and the maker runs there, once, with geomesh.
+PREPARED = {"cad_part": ("cad_part_model.geo", "cad_part.step")}
 
 
 def ensure_reference():
@@ -87,6 +96,19 @@ def quality(geomesh, msh_path):
     return (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
 
 
+def prepare(name, script, geomesh, work):
+    """The script to run for a case: in place, or copied next to the file it reads, made first."""
+    if name not in PREPARED:
+        return SCRIPTS / script
+    maker, made = PREPARED[name]
+    for f in (script, maker):
+        shutil.copy(SCRIPTS / f, work / f)
+    if not (work / made).exists():
+        subprocess.run([str(geomesh), maker, "-0", "-o", "cad_part_model.geo_unrolled"], cwd=work,
+                       check=True, capture_output=True)
+    return work / script
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("cases", nargs="*", default=list(CASES))
@@ -102,12 +124,14 @@ def main():
     work.mkdir(parents=True, exist_ok=True)
     print(f"{'case':24} {'program':10} {'wall s':>8} {'stage s':>8} {'peak MiB':>9} {'triangles':>10} "
           f"{'tri/s':>10} {'min gamma':>9} {'mean gamma':>10}")
+    speeds = {}
     for name in args.cases:
         script, extra, stage = CASES[name]
+        script_path = prepare(name, script, geomesh, work)
         rows = {}
         for program, cmd in (("geomesh", [str(geomesh)]), ("reference", reference)):
             out = work / f"{name}-{program}.msh"
-            full = cmd + [str(SCRIPTS / script)] + extra + ["-nt", "1", "-o", str(out)]
+            full = cmd + [str(script_path)] + extra + ["-nt", "1", "-o", str(out)]
             wall, rss, log = measure(full, work)
             st = stage_seconds(log, stage) if stage != "script" else wall
             tri = triangles(out) if stage == "2D" and out.exists() else 0
@@ -120,6 +144,12 @@ def main():
         g, r = rows["geomesh"], rows["reference"]
         speed = (r[1] / g[1]) if g[1] and r[1] else float("nan")
         print(f"{name:24} {'ratio':10} {r[0] / g[0]:8.2f}x {speed:7.2f}x {r[2] / g[2]:8.2f}x  (reference / geomesh)")
+        speeds[name] = {program: row[4] for program, row in rows.items()}
+    if "cad_part" in speeds and "square_like_cad_part" in speeds:
+        for program in ("geomesh", "reference"):
+            cad, plane = speeds["cad_part"][program], speeds["square_like_cad_part"][program]
+            if cad:
+                print(f"{'CAD cost':24} {program:10} {plane / cad:8.2f}x  (triangles/s on the square / on the STEP part)")
 
 
 if __name__ == "__main__":

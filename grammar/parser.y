@@ -204,6 +204,11 @@ command:
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
     c.args = std::move($3); c.op = std::move($5); c.value = std::move($6);
     $$ = makeStmt(std::move(c), @1); }
+| words '(' args_opt ')' assign_op expr tail ';' {
+    // Surface(1) = {1} Using Point{5}; Surface(1) = {1} In Sphere{7};
+    CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
+    c.args = std::move($3); c.op = std::move($5); c.value = std::move($6);
+    c.tail = std::move($7); $$ = makeStmt(std::move(c), @1); }
 | WORD '[' expr ']' '=' expr ';' {
     CommandStmt c; c.words.push_back(std::move($1)); c.argStyle = CommandStmt::Args::Bracket;
     c.args.push_back(std::move($3)); c.op = "="; c.value = std::move($6);

@@ -57,12 +57,35 @@ int Interpreter::entityTag(const ast::CommandStmt& command, const SourceLocation
 
 // Line(t) = {..}; and the other entities given by their tag and a list of tags: Curve Loop,
 // Plane Surface, Surface Loop, Volume, Ellipse, Spline, BSpline, Bezier, Surface, Ruled Surface.
+// What follows a surface definition: `Using Point{..}` (points an OpenCASCADE filling passes
+// through) and `In Sphere{c}` (the built-in kernel recognises a patch of sphere from its arcs
+// alone). Returns the points; anything else warns and is ignored.
+std::vector<int> Interpreter::fillingPoints(const ast::CommandStmt& command,
+                                           const SourceLocation& where) {
+  std::vector<int> points;
+  for (const ast::TailItem& item : command.tail) {
+    const ast::Expr* shape = item.value.get();
+    const bool isShape = shape && shape->kind == ast::ExprKind::Shape && shape->words.size() == 1;
+    const bool filling = command.words.back() == "Surface" && command.words.size() == 1;
+    if (filling && isShape && item.word == "Using" && shape->words[0] == "Point") {
+      for (double t : shapeArguments(*shape)) points.push_back(clampedInteger<int>(t));
+      if (session_.factory().name() != "OpenCASCADE")
+        warn(where, "'Using Point' constrains OpenCASCADE fillings only; ignored here");
+    } else if (!(filling && isShape && item.word == "In" && shape->words[0] == "Sphere")) {
+      warn(where, "'" + item.word + "' after " + joined(command.words) +
+                      " is not supported; ignored");
+    }
+  }
+  return points;
+}
+
 void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLocation& where) {
   const Words& w = command.words;
   if (!isDefinition(command)) return embedEntities(command, where);
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
   const std::vector<int> tags = entityTags(value);
+  const std::vector<int> through = fillingPoints(command, where);
   GeometryFactory& geo = session_.factory();
   auto requireCount = [&](std::size_t count, const char* what) {
     if (tags.size() != count)
@@ -87,10 +110,14 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
         geo.addSurfaceLoop(tag, tags);
       else
         geo.addCurveLoop(tag, tags);
+    } else if (w == Words{"BSpline", "Surface"} || w == Words{"Bezier", "Surface"}) {
+      requireCount(1, "one curve loop");
+      if (SolidModeling* solids = solidModeling(joined(w), where))
+        solids->addCurveFilling(tag, tags[0], w[0] == "Bezier");
     } else if (w == Words{"Plane", "Surface"}) {
       geo.addPlaneSurface(tag, tags);
     } else if (w.back() == "Surface") {
-      geo.addFillingSurface(tag, tags);
+      geo.addFillingSurface(tag, tags, through);
     } else {
       geo.addVolume(tag, tags);
     }

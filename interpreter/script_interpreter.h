@@ -158,6 +158,7 @@ class Interpreter {
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<int> entityTags(const ast::Expr& list);
+  std::vector<int> fillingPoints(const ast::CommandStmt& command, const SourceLocation& where);
   void optionChanged(const std::string& name);
   void executeSetter(const ast::CommandStmt& command, const SourceLocation& where);
 

@@ -45,8 +45,9 @@ void FallbackFactory::addCurveLoop(int tag, std::vector<int> curves) {
 void FallbackFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   route([&](GeometryFactory& f) { f.addPlaneSurface(tag, curveLoops); });
 }
-void FallbackFactory::addFillingSurface(int tag, std::vector<int> curveLoops) {
-  route([&](GeometryFactory& f) { f.addFillingSurface(tag, curveLoops); });
+void FallbackFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
+                                        const std::vector<int>& through) {
+  route([&](GeometryFactory& f) { f.addFillingSurface(tag, curveLoops, through); });
 }
 void FallbackFactory::addSurfaceLoop(int tag, std::vector<int> surfaces) {
   route([&](GeometryFactory& f) { f.addSurfaceLoop(tag, surfaces); });

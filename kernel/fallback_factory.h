@@ -34,7 +34,8 @@ class FallbackFactory final : public GeometryFactory {
   void addBezier(int tag, const std::vector<int>& points) override;
   void addCurveLoop(int tag, std::vector<int> curves) override;
   void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
-  void addFillingSurface(int tag, std::vector<int> curveLoops) override;
+  void addFillingSurface(int tag, std::vector<int> curveLoops,
+                         const std::vector<int>& through) override;
   void addSurfaceLoop(int tag, std::vector<int> surfaces) override;
   void addVolume(int tag, std::vector<int> surfaceLoops) override;
   int addBox(int tag, Vec3 corner, Vec3 extent) override;

@@ -19,7 +19,9 @@ void GeometryFactory::addBSpline(int, const std::vector<int>&) { unsupported("BS
 void GeometryFactory::addBezier(int, const std::vector<int>&) { unsupported("Bezier"); }
 void GeometryFactory::addCurveLoop(int, std::vector<int>) { unsupported("Curve Loop"); }
 void GeometryFactory::addPlaneSurface(int, std::vector<int>) { unsupported("Plane Surface"); }
-void GeometryFactory::addFillingSurface(int, std::vector<int>) { unsupported("Surface"); }
+void GeometryFactory::addFillingSurface(int, std::vector<int>, const std::vector<int>&) {
+  unsupported("Surface");
+}
 void GeometryFactory::addSurfaceLoop(int, std::vector<int>) { unsupported("Surface Loop"); }
 void GeometryFactory::addVolume(int, std::vector<int>) { unsupported("Volume"); }
 int GeometryFactory::addBox(int, Vec3, Vec3) { unsupported("Box"); }

@@ -41,7 +41,10 @@ class GeometryFactory {
   virtual void addBezier(int tag, const std::vector<int>& points);
   virtual void addCurveLoop(int tag, std::vector<int> curves);
   virtual void addPlaneSurface(int tag, std::vector<int> curveLoops);
-  virtual void addFillingSurface(int tag, std::vector<int> curveLoops);
+  // A surface filling the curve loop; an OpenCASCADE filling also passes through the points
+  // `through` (the built-in kernel ignores them).
+  virtual void addFillingSurface(int tag, std::vector<int> curveLoops,
+                                 const std::vector<int>& through);
   virtual void addSurfaceLoop(int tag, std::vector<int> surfaces);
   virtual void addVolume(int tag, std::vector<int> surfaceLoops);
   // Box(tag) = {x, y, z, dx, dy, dz}: an axis-aligned box with a corner at `corner` and the

@@ -73,6 +73,10 @@ class SolidModeling {
   virtual std::vector<EntityId> extrudeAlongWire(const std::vector<EntityId>& shapes,
                                                  int wireTag) = 0;
 
+  // BSpline Surface(tag) = {loop}; / Bezier Surface(tag) = {loop};: the surface bounded by a
+  // loop of 2 to 4 B-spline (Bezier) curves, by OpenCASCADE's curved filling style.
+  virtual void addCurveFilling(int tag, int curveLoop, bool bezier) = 0;
+
   // (Ruled) ThruSections(tag) = {wires}; Fillet{volumes}{curves}{radii};
   // Chamfer{volumes}{curves}{surfaces}{distances}.
   virtual std::vector<EntityId> addThruSections(int tag, const std::vector<int>& wires,

@@ -119,7 +119,8 @@ void GeoFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   noteTag(2, tag);
 }
 
-void GeoFactory::addFillingSurface(int tag, std::vector<int> curveLoops) {
+void GeoFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
+                                   const std::vector<int>& /*through*/) {
   requireNew(surfaces_, tag, "Surface");
   auto loops = surfaceLoopsOf(tag, curveLoops, "Surface");
   if (loops.size() != 1) fail("Surface ", tag, ": a filling surface cannot have holes");

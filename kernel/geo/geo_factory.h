@@ -55,7 +55,8 @@ class GeoFactory final : public GeometryFactory {
 
   // Surface(tag) = {loop}: a surface filling a loop of 3 or 4 curves by transfinite
   // interpolation of its sides.
-  void addFillingSurface(int tag, std::vector<int> curveLoops) override;
+  void addFillingSurface(int tag, std::vector<int> curveLoops,
+                         const std::vector<int>& through) override;
   // Compound Curve{..} / Compound Surface{..}: meshed as one; recorded on each entity.
   void addCompound(int dim, const std::vector<int>& tags) override;
   // Physical X(tag) -= {..}: removes entities from a group (the group goes when emptied).

@@ -54,7 +54,9 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   void addWire(int tag, const std::vector<int>& curves) override;
   // First loop outer, others holes.
   void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
-  void addFillingSurface(int tag, std::vector<int> curveLoops) override;
+  void addFillingSurface(int tag, std::vector<int> curveLoops,
+                         const std::vector<int>& through) override;
+  void addCurveFilling(int tag, int curveLoop, bool bezier) override;
   void addSurfaceLoop(int tag, std::vector<int> surfaces) override;
   void addVolume(int tag, std::vector<int> surfaceLoops) override;
   // MeshSize{points} = size: the prescribed mesh size at the points.

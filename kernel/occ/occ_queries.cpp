@@ -2,6 +2,9 @@
 // (transformations, copies, deletion).
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Compound.hxx>
+#include <BRep_Builder.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -223,41 +226,50 @@ std::array<double, 12> folded(const AffineMap& map) {
 }  // namespace
 
 // As the reference does: each shape keeps its tag, and its sub-shapes, made anew, take new
-// tags (after the shapes' old sub-shapes are gone).
+// tags (after the shapes' old sub-shapes are gone). The shapes are transformed together, as
+// one compound, so that shapes sharing a sub-shape still share its image.
 void OccFactory::transform(const std::vector<EntityId>& shapes, const AffineMap& map) {
   const std::array<double, 12> m = folded(map);
   double scale = 1;
   const bool similarity = isSimilarity(map, scale);
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (const EntityId& e : shapes) builder.Add(all, shapes_->find(e.dim, std::abs(e.tag)));
+  const TopoDS_Shape moved = guarded("the transformation", [&] {
+    if (similarity) {
+      gp_Trsf t;
+      t.SetValues(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11]);
+      return BRepBuilderAPI_Transform(all, t, true).Shape();
+    }
+    gp_GTrsf t;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) t.SetValue(r + 1, c + 1, m[4 * r + c]);
+      t.SetValue(r + 1, 4, m[4 * r + 3]);
+    }
+    return BRepBuilderAPI_GTransform(all, t, true).Shape();
+  });
   std::vector<std::pair<EntityId, TopoDS_Shape>> images;
-  for (const EntityId& e : shapes) {
-    const EntityId id{e.dim, std::abs(e.tag)};
-    const TopoDS_Shape& old = shapes_->find(id.dim, id.tag);
-    images.emplace_back(id, guarded("transformation of " + entityName(id.dim, id.tag), [&] {
-      if (similarity) {
-        gp_Trsf t;
-        t.SetValues(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11]);
-        return BRepBuilderAPI_Transform(old, t, true).Shape();
-      }
-      gp_GTrsf t;
-      for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c) t.SetValue(r + 1, c + 1, m[4 * r + c]);
-        t.SetValue(r + 1, 4, m[4 * r + 3]);
-      }
-      return BRepBuilderAPI_GTransform(old, t, true).Shape();
-    }));
-  }
+  auto e = shapes.begin();
+  for (TopoDS_Iterator it(moved); it.More() && e != shapes.end(); it.Next(), ++e)
+    images.emplace_back(EntityId{e->dim, std::abs(e->tag)}, it.Value());
   for (const auto& [id, image] : images) shapes_->unbind(id.dim, id.tag, true);
   for (const auto& [id, image] : images) shapes_->bindTree(id.dim, id.tag, image);
 }
 
+// The shapes are copied together, as one compound, so that copies of shapes that shared
+// sub-shapes (curves meeting at a point) share the copies of those.
 std::vector<EntityId> OccFactory::duplicate(const std::vector<EntityId>& shapes) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (const EntityId& e : shapes) builder.Add(all, shapes_->find(e.dim, std::abs(e.tag)));
+  const TopoDS_Shape copy =
+      guarded("Duplicata", [&] { return BRepBuilderAPI_Copy(all).Shape(); });
   std::vector<EntityId> out;
-  for (const EntityId& e : shapes) {
-    const TopoDS_Shape& shape = shapes_->find(e.dim, std::abs(e.tag));
-    const TopoDS_Shape copy = guarded("Duplicata of " + entityName(e.dim, std::abs(e.tag)),
-                                      [&] { return BRepBuilderAPI_Copy(shape).Shape(); });
-    out.push_back({e.dim, shapes_->bindNew(e.dim, copy)});
-  }
+  auto e = shapes.begin();
+  for (TopoDS_Iterator it(copy); it.More() && e != shapes.end(); it.Next(), ++e)
+    out.push_back({e->dim, shapes_->bindNew(e->dim, it.Value())});
   return out;
 }
 

@@ -4,7 +4,14 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepOffsetAPI_MakeFilling.hxx>
 #include <BRep_Builder.hxx>
+#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <GeomFill_BSplineCurves.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <Geom_Surface.hxx>
 #include <ShapeFix_Face.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <TopExp_Explorer.hxx>
@@ -44,19 +51,91 @@ void OccFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   shapes_->bindTree(2, tag, face);
 }
 
-// A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them.
-void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops) {
+// A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them: the
+// filling's own face has new edges, so the face is rebuilt on the loop's wire, which keeps the
+// script's curves (and their tags) as its boundary.
+void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
+                                   const std::vector<int>& through) {
   tag = primitiveTag(2, tag, "Surface");
   const std::string what = "Surface " + std::to_string(tag);
   if (curveLoops.size() != 1) throw GeometryError(what + ": a filling takes one curve loop");
   const TopoDS_Shape& wire = shapes_->findWire(std::abs(curveLoops[0]));
   const TopoDS_Shape face = guarded(what, [&] {
-    BRepOffsetAPI_MakeFilling filling;
+    // A plane loop is filled by its plane: exact, so that Booleans with other plane faces
+    // find the faces coplanar (a plate surface through it is plane only to its tolerance).
+    if (through.empty()) {
+      BRepBuilderAPI_MakeFace plane(TopoDS::Wire(wire), true);
+      if (plane.IsDone()) return TopoDS_Shape(plane.Face());
+    }
+    // Degree 2 (OpenCASCADE defaults otherwise), as the reference builds its fillings.
+    BRepOffsetAPI_MakeFilling filling(2);
     for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())
       filling.Add(TopoDS::Edge(it.Current()), GeomAbs_C0, true);
+    for (int point : through)
+      filling.Add(BRep_Tool::Pnt(TopoDS::Vertex(shapes_->find(0, std::abs(point)))));
     filling.Build();
     if (!filling.IsDone()) throw GeometryError(what + ": no surface fills this loop");
-    return filling.Shape();
+    TopExp_Explorer faces(filling.Shape(), TopAbs_FACE);
+    if (!faces.More()) throw GeometryError(what + ": no surface fills this loop");
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(faces.Current()));
+    BRepBuilderAPI_MakeFace maker(surface, TopoDS::Wire(wire), true);
+    if (!maker.IsDone()) return filling.Shape();
+    // The wire's curves lie on the surface only to the filling's tolerance: the fix computes
+    // their curves in the surface's parameters (on the same edges), and turns a loop that
+    // runs the wrong way round.
+    ShapeFix_Face fix(maker.Face());
+    fix.FixAddNaturalBoundMode() = false;
+    fix.Perform();
+    const TopoDS_Face rebuilt = fix.Face();
+    return TopoDS_Shape(rebuilt);
+  });
+  shapes_->bindTree(2, tag, face);
+}
+
+namespace {
+
+// The loop's curves in order along it, each turned to run along the loop, as B-spline curves.
+std::vector<Handle(Geom_BSplineCurve)> loopCurves(const TopoDS_Wire& wire,
+                                                 const std::string& what) {
+  std::vector<Handle(Geom_BSplineCurve)> curves;
+  for (BRepTools_WireExplorer it(wire); it.More(); it.Next()) {
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(it.Current(), first, last);
+    if (curve.IsNull()) throw GeometryError(what + ": a curve of its loop has no geometry");
+    Handle(Geom_BSplineCurve) spline = GeomConvert::CurveToBSplineCurve(
+        new Geom_TrimmedCurve(curve, first, last), Convert_TgtThetaOver2);
+    if (it.Current().Orientation() == TopAbs_REVERSED) spline->Reverse();
+    curves.push_back(spline);
+  }
+  return curves;
+}
+
+}  // namespace
+
+void OccFactory::addCurveFilling(int tag, int curveLoop, bool bezier) {
+  tag = primitiveTag(2, tag, bezier ? "Bezier Surface" : "BSpline Surface");
+  const std::string what = (bezier ? "Bezier Surface " : "BSpline Surface ") + std::to_string(tag);
+  const TopoDS_Wire wire = TopoDS::Wire(shapes_->findWire(std::abs(curveLoop)));
+  const TopoDS_Shape face = guarded(what, [&] {
+    const std::vector<Handle(Geom_BSplineCurve)> c = loopCurves(wire, what);
+    if (c.size() < 2 || c.size() > 4)
+      throw GeometryError(what + ": its loop has " + std::to_string(c.size()) +
+                          " curves; it takes 2, 3 or 4");
+    if (bezier)
+      for (const Handle(Geom_BSplineCurve)& curve : c)
+        if (curve->NbKnots() != 2)
+          throw GeometryError(what + ": the curves of its loop must be Bezier curves");
+    GeomFill_BSplineCurves fill;
+    if (c.size() == 2) fill.Init(c[0], c[1], GeomFill_CurvedStyle);
+    if (c.size() == 3) fill.Init(c[0], c[1], c[2], GeomFill_CurvedStyle);
+    if (c.size() == 4) fill.Init(c[0], c[1], c[2], c[3], GeomFill_CurvedStyle);
+    const Handle(Geom_Surface) surface(fill.Surface());
+    BRepBuilderAPI_MakeFace maker(surface, wire, true);
+    if (!maker.IsDone()) throw GeometryError(what + ": no surface fills its loop");
+    ShapeFix_Face fix(maker.Face());
+    fix.FixAddNaturalBoundMode() = false;
+    fix.Perform();
+    return TopoDS_Shape(fix.Face());
   });
   shapes_->bindTree(2, tag, face);
 }

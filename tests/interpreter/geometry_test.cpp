@@ -36,6 +36,24 @@ TEST(Geometry, CircleArcs) {
   EXPECT_EQ(run.session.model().curve(1)->endPoint, 3);
 }
 
+// `In Sphere{c}` after a filling is accepted silently (the arcs already say which sphere);
+// `Using Point` constrains OpenCASCADE fillings only, and says so under the built-in kernel.
+TEST(Geometry, FillingTails) {
+  ScriptRun run;
+  run.run("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {0, 1, 0};\n"
+          "Point(4) = {0, 0, 1};\n"
+          "Circle(1) = {2, 1, 3}; Circle(2) = {3, 1, 4}; Circle(3) = {4, 1, 2};\n"
+          "Curve Loop(1) = {1, 2, 3};\n"
+          "Surface(1) = {1} In Sphere{1};\n"
+          "Surface(2) = {1} Using Point{1};\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_NE(run.log.warnings[0].find("6:1: warning: 'Using Point' constrains OpenCASCADE"),
+            std::string::npos)
+      << run.log.warnings[0];
+  run.session.synchronize();
+  EXPECT_EQ(run.session.model().surfaces().size(), 2u);
+}
+
 TEST(Geometry, CircleErrorsCarryTheLocation) {
   std::string error = firstLineOf("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0};\nCircle(1) = {2, 1, 7};");
   EXPECT_EQ(error.substr(0, 21), "test.geo:2:1: error: ") << error;

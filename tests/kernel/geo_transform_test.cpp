@@ -171,7 +171,7 @@ TEST(GeoSurfaces, FillingSurfaceInterpolatesItsBoundary) {
   for (int i = 1; i <= 4; ++i) geo.addLine(i, i, i % 4 + 1);
   geo.addCurveLoop(1, {1, 2, 3, 4});
   EXPECT_THROW(geo.addPlaneSurface(1, {1}), GeometryError);
-  geo.addFillingSurface(1, {1});
+  geo.addFillingSurface(1, {1}, {});
   Model model;
   geo.synchronize(model);
   const SurfaceGeometry& s = *model.surface(1)->geometry;
@@ -195,7 +195,7 @@ TEST(GeoSurfaces, TriangularFillingSurface) {
   geo.addLine(2, 2, 3);
   geo.addLine(3, 3, 1);
   geo.addCurveLoop(1, {1, 2, 3});
-  geo.addFillingSurface(1, {1});
+  geo.addFillingSurface(1, {1}, {});
   Model model;
   geo.synchronize(model);
   const SurfaceGeometry& s = *model.surface(1)->geometry;
@@ -222,7 +222,7 @@ TEST(GeoSurfaces, TriangularFillingSurfaceIsContinuousAtItsCorners) {
   geo.addEllipseArc(2, 3, 1, 3, 4);
   geo.addEllipseArc(3, 4, 1, 2, 2);
   geo.addCurveLoop(1, {1, 2, 3});
-  geo.addFillingSurface(1, {1});
+  geo.addFillingSurface(1, {1}, {});
   Model model;
   geo.synchronize(model);
   const SurfaceGeometry& s = *model.surface(1)->geometry;
@@ -254,7 +254,7 @@ TEST(GeoSurfaces, FillingSurfaceOfArcsOfOneSphereLiesOnIt) {
   geo.addCircleArc(2, 3, 1, 4);
   geo.addCircleArc(3, 4, 1, 2);
   geo.addCurveLoop(1, {1, 2, 3});
-  geo.addFillingSurface(1, {1});
+  geo.addFillingSurface(1, {1}, {});
   Model model;
   geo.synchronize(model);
   const SurfaceGeometry& s = *model.surface(1)->geometry;

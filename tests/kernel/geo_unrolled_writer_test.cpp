@@ -28,7 +28,7 @@ TEST(GeoUnrolledWriter, WritesEntitiesSizesLoopsAndPhysicals) {
   geo.addCurveLoop(1, {1, 2, 3, 4});
   geo.addCurveLoop(2, {5, 6, 7});
   geo.addPlaneSurface(1, {1, 2});
-  geo.addFillingSurface(2, {2});
+  geo.addFillingSurface(2, {2}, {});
   geo.addPhysicalGroup(2, 5, "plate", {1});
   geo.addPhysicalGroup(1, 3, "", {1, 2});
   std::ostringstream out;

@@ -241,7 +241,7 @@ TEST(MeshAdapt, BuiltInKernelSurfaceOnFourCurvedSides) {
   geo.addCircleArc(3, 3, 5, 4);
   geo.addCircleArc(4, 4, 6, 1);
   geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addFillingSurface(1, {1});
+  geo.addFillingSurface(1, {1}, {});
   Model model;
   geo.synchronize(model);
   const Mesh mesh = meshAdapt(model);
