@@ -410,7 +410,8 @@ std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr
   if (word == "Closest") return closestShapes(shape);
   if (shape.words == Words{"Extrude", "Using Wire"}) {  // out[] = Extrude{..} Using Wire{w};
     if (shape.parts.size() != 2 || !shape.parts[0].isBlock)
-      fail(shape.loc, "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
+      fail(shape.loc,
+           "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
     return pipe(shape.parts[0], shape.parts[1], shape.loc, shape.loc);
   }
   if (word.rfind("Boolean", 0) == 0) return booleanShapes(word, shape.parts, -1, shape.loc);

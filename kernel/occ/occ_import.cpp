@@ -124,7 +124,8 @@ std::optional<std::vector<EntityId>> bindTagged(OccShapes& shapes, const XaoCont
 }
 
 // An XAO file's groups, by the tags their elements got (elements left unbound are dropped).
-std::vector<PhysicalGroup> groupsByTag(const OccShapes& shapes, const std::vector<XaoGroup>& groups) {
+std::vector<PhysicalGroup> groupsByTag(const OccShapes& shapes,
+                                       const std::vector<XaoGroup>& groups) {
   std::vector<PhysicalGroup> out;
   for (const XaoGroup& g : groups) {
     PhysicalGroup group{g.dim, g.tag, g.name, {}};

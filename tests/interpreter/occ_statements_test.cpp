@@ -184,7 +184,8 @@ TEST(OccStatements, HealShapes) {
 // the curves, whichever way each runs; curves that match no rigid motion are an error.
 TEST(OccStatements, PeriodicSurfaceByCurves) {
   ScriptRun run;
-  run.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\nPeriodic Surface 2 {5, 8, 7, 6} = 1 {1, 4, 3, 2};\n");
+  run.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                 "Periodic Surface 2 {5, 8, 7, 6} = 1 {1, 4, 3, 2};\n");
   EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
   run.session.synchronize();
   const ModelSurface* slave = run.session.model().surface(2);
