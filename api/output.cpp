@@ -56,7 +56,8 @@ void writeMesh(const Session& session, const std::string& path, const MeshFormat
 
 void writeUnrolledGeometry(Session& session, const std::string& path) {
   writeFileAtomically(path, [&](std::ostream& out) {
-    session.factory().writeUnrolled(out, meshConstraintHooks(session.model().meshConstraints()));
+    session.factories().writeUnrolled(
+        out, meshConstraintHooks(session.model().meshConstraints()), path + ".xao");
   });
 }
 

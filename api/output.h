@@ -23,8 +23,8 @@ MeshWriteOptions writeOptions(const OptionRegistry& options);
 // (std::runtime_error naming the file).
 void writeMesh(const Session& session, const std::string& path, const MeshFormat& format);
 
-// The built-in kernel's geometry as a flat script, with its mesh constraints (what -0 and
-// Save "f.geo_unrolled" write).
+// The geometry as a flat script, with its mesh constraints (what -0 and Save
+// "f.geo_unrolled" write); OpenCASCADE shapes go to "f.geo_unrolled.xao", which it merges.
 void writeUnrolledGeometry(Session& session, const std::string& path);
 
 // The options that differ from their defaults, as a script sets them (Save "f.opt").

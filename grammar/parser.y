@@ -464,6 +464,9 @@ primary:
 | member_ref '[' expr ']' {
     $$ = std::move($1); $$->kind = ExprKind::MemberItem; $$->args.push_back(std::move($3)); }
 | shape { $$ = std::move($1); }
+| shape USINGWIRE part {
+    // out[] = Extrude{ Surface{1}; } Using Wire{2}; the wire's braces become the last part.
+    $$ = std::move($1); $$->words.push_back("Using Wire"); $$->parts.push_back(std::move($3)); }
 | words '(' args_opt ')' {
     $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);
     $$->parts.emplace_back(); $$->parts.back().items = std::move($3); }

@@ -124,7 +124,8 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
                     "' skipped: this session writes no file");
     return;
   }
-  if (ext == ".brep" || ext == ".step" || ext == ".stp") return saveCadFile(shown, where);
+  if (ext == ".brep" || ext == ".step" || ext == ".stp" || ext == ".xao")
+    return saveCadFile(shown, where);
   const MeshFormat* format =
       findFormatByExtension(ext, session_.options().number("Mesh.MshFileVersion"));
   if (!format && ext != ".opt" && ext != ".geo_unrolled") {
@@ -158,7 +159,7 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   if (ext == ".geo" || ext == ".opt" || ext == ".geo_unrolled")
     return executeInclude(command, where);
   if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep" ||
-      ext == ".brp")
+      ext == ".brp" || ext == ".xao")
     return mergeCadFile(file, where);
   if (!findReaderByExtension(ext)) {
     session_.noteIgnoredStatement(where);

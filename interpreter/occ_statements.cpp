@@ -1,5 +1,6 @@
 // OpenCASCADE statements: primitives (Sphere, Cylinder, Cone, Torus, Wedge, Rectangle, Disk,
-// whole Circle and Ellipse), Wire, Booleans, ThruSections, Fillet, Chamfer and ShapeFromFile.
+// whole Circle and Ellipse), Wire, Booleans, ThruSections, Fillet, Chamfer, HealShapes and
+// ShapeFromFile.
 // They need a factory that offers solid modeling (SetFactory("OpenCASCADE")).
 #include <cmath>
 #include <filesystem>
@@ -308,6 +309,45 @@ std::vector<EntityId> Interpreter::roundedShapes(const ast::Expr& shape) {
   }
 }
 
+// Geometry.Tolerance and the Geometry.OCCFix*, OCCSewFaces and OCCMakeSolids options.
+SolidModeling::HealingOptions Interpreter::healingOptions() const {
+  const OptionRegistry& options = session_.options();
+  auto on = [&](const char* name) { return options.number(name) != 0; };
+  return {options.number("Geometry.Tolerance"), on("Geometry.OCCFixDegenerated"),
+          on("Geometry.OCCFixSmallEdges"),      on("Geometry.OCCFixSmallFaces"),
+          on("Geometry.OCCSewFaces"),           on("Geometry.OCCMakeSolids")};
+}
+
+// What reading a CAD file takes from the options: scaling, target unit, healing.
+void Interpreter::applyImportOptions(SolidModeling& solids) const {
+  const OptionRegistry& options = session_.options();
+  solids.setImportOptions({options.number("Geometry.OCCScaling"),
+                           options.string("Geometry.OCCTargetUnit"), healingOptions()});
+}
+
+// HealShapes; heals every OpenCASCADE shape, HealShapes{ Volume{1}; Surface{2}; } those given
+// (an extension: the reference reads only the first form), with the healing options.
+void Interpreter::executeHealShapes(const ast::CommandStmt& command, const SourceLocation& where) {
+  std::vector<EntityId> shapes;
+  if (command.shape) {
+    const ast::Expr& block = *command.shape;
+    if (block.parts.size() != 1 || !block.parts[0].isBlock)
+      fail(where, "HealShapes takes shapes in one block, as in HealShapes{ Volume{1}; }");
+    shapes = shapesIn(block.parts[0]);
+    if (shapes.empty()) return;
+  } else if (command.argStyle != ast::CommandStmt::Args::None || command.value) {
+    fail(where, "HealShapes takes no values: HealShapes; or HealShapes{ Volume{1}; }");
+  }
+  SolidModeling* solids = solidModeling("HealShapes", where);
+  if (!solids) return;
+  try {
+    for (const EntityId& e : solids->healShapes(shapes, healingOptions()))
+      session_.recordOrigin(e, where);
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
 // ShapeFromFile("part.step"): the highest-dimensional entities the file holds.
 std::vector<EntityId> Interpreter::shapesFromFile(const ast::Expr& shape) {
   if (shape.parts.size() != 1 || shape.parts[0].items.size() != 1)
@@ -318,6 +358,7 @@ std::vector<EntityId> Interpreter::shapesFromFile(const ast::Expr& shape) {
   SolidModeling* solids = solidModeling("ShapeFromFile", shape.loc);
   if (!solids) return {};
   try {
+    applyImportOptions(*solids);
     return solids->importShapes(path);
   } catch (const GeometryError& error) {
     fail(shape.loc, error.what());
@@ -339,19 +380,27 @@ std::vector<EntityId> Interpreter::closestShapes(const ast::Expr& shape) {
   }
 }
 
-// Extrude{ Surface{..}; } Using Wire{w}: a pipe.
+// Extrude{ Surface{..}; } Using Wire{w}: a pipe, as a statement.
 std::vector<EntityId> Interpreter::extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire) {
-  if (shape.words != Words{"Extrude"} || shape.parts.size() != 1 || !shape.parts[0].isBlock)
+  if (shape.words != Words{"Extrude"} || shape.parts.size() != 1 || !shape.parts[0].isBlock ||
+      wire.parts.size() != 1)
     fail(shape.loc, "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
-  const std::vector<EntityId> shapes = shapesIn(shape.parts[0]);
-  const std::vector<double> wires = shapeArguments(wire);
-  if (wires.size() != 1) fail(wire.loc, "Using Wire takes one wire, as in Using Wire{2}");
-  SolidModeling* solids = solidModeling("Extrude Using Wire", shape.loc);
+  return pipe(shape.parts[0], wire.parts[0], shape.loc, wire.loc);
+}
+
+// The shapes of `block` swept along the wire `wire` names.
+std::vector<EntityId> Interpreter::pipe(const ast::ShapePart& block, const ast::ShapePart& wire,
+                                        const SourceLocation& where,
+                                        const SourceLocation& wireWhere) {
+  const std::vector<EntityId> shapes = shapesIn(block);
+  const std::vector<double> wires = evaluateNumbers(wire.items);
+  if (wires.size() != 1) fail(wireWhere, "Using Wire takes one wire, as in Using Wire{2}");
+  SolidModeling* solids = solidModeling("Extrude Using Wire", where);
   if (!solids) return {};
   try {
     return solids->extrudeAlongWire(shapes, clampedInteger<int>(wires[0]));
   } catch (const GeometryError& error) {
-    fail(shape.loc, error.what());
+    fail(where, error.what());
   }
 }
 
@@ -359,27 +408,37 @@ std::vector<EntityId> Interpreter::extrudeAlongWire(const ast::Expr& shape, cons
 std::optional<std::vector<EntityId>> Interpreter::solidOperation(const ast::Expr& shape) {
   const std::string& word = shape.words[0];
   if (word == "Closest") return closestShapes(shape);
+  if (shape.words == Words{"Extrude", "Using Wire"}) {  // out[] = Extrude{..} Using Wire{w};
+    if (shape.parts.size() != 2 || !shape.parts[0].isBlock)
+      fail(shape.loc,
+           "Extrude Using Wire takes shapes, as in Extrude{ Surface{1}; } Using Wire{2}");
+    return pipe(shape.parts[0], shape.parts[1], shape.loc, shape.loc);
+  }
   if (word.rfind("Boolean", 0) == 0) return booleanShapes(word, shape.parts, -1, shape.loc);
   if (word == "Fillet" || word == "Chamfer") return roundedShapes(shape);
   if (word == "ShapeFromFile") return shapesFromFile(shape);
   return std::nullopt;
 }
 
-// Merge "part.step": the file's shapes join the OpenCASCADE model, whichever factory is
-// selected, as in the reference.
+// Merge "part.step": the file's shapes (of every dimension) join the OpenCASCADE model,
+// whichever factory is selected, and an XAO file's groups become physical groups, as in the
+// reference.
 void Interpreter::mergeCadFile(const std::string& file, const SourceLocation& where) {
   std::filesystem::path path = file;
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
+  SolidModeling& solids = session_.factories().solidModeler();
   try {
-    for (const EntityId& e :
-         session_.factories().solidModeler().importShapes(path.lexically_normal().string()))
+    applyImportOptions(solids);
+    for (const EntityId& e : solids.importShapes(path.lexically_normal().string(), true))
       session_.recordOrigin(e, where);
+    for (const PhysicalGroup& g : solids.importedGroups())  // an XAO file's groups
+      session_.factory().addPhysicalGroup(g.dim, g.tag, g.name, g.entities);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
 }
 
-// Save "part.brep" / "part.step": the OpenCASCADE model's shapes.
+// Save "part.brep" / "part.step" / "part.xao": the OpenCASCADE model's shapes.
 void Interpreter::saveCadFile(const std::string& path, const SourceLocation& where) {
   try {
     session_.factories().solidModeler().exportShapes(path);

@@ -144,8 +144,13 @@ class Interpreter {
   std::vector<EntityId> roundedShapes(const ast::Expr& shape);
   void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
+  void executeHealShapes(const ast::CommandStmt& command, const SourceLocation& where);
+  SolidModeling::HealingOptions healingOptions() const;
+  void applyImportOptions(SolidModeling& solids) const;
   std::vector<EntityId> closestShapes(const ast::Expr& shape);
   std::vector<EntityId> extrudeAlongWire(const ast::Expr& shape, const ast::Expr& wire);
+  std::vector<EntityId> pipe(const ast::ShapePart& block, const ast::ShapePart& wire,
+                             const SourceLocation& where, const SourceLocation& wireWhere);
   std::optional<std::vector<EntityId>> solidOperation(const ast::Expr& shape);
   void mergeCadFile(const std::string& file, const SourceLocation& where);
   void saveCadFile(const std::string& path, const SourceLocation& where);

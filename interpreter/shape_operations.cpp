@@ -38,7 +38,7 @@ int Interpreter::entityDimension(const std::vector<std::string>& words) {
   return -1;
 }
 
-std::vector<int> Interpreter::allTags(int dim) const { return session_.factory().tags(dim); }
+std::vector<int> Interpreter::allTags(int dim) const { return session_.factories().tags(dim); }
 
 // The tags of Point{..}, Curve{..}, ... with ':' standing for every entity of the kind.
 std::vector<int> Interpreter::shapeTags(const ast::Expr& shape, int dim) {
@@ -145,6 +145,7 @@ std::vector<EntityId> Interpreter::extrude(const ast::Expr& shape) {
 
 // Operations that produce shapes; nullopt when `shape` is none of them.
 std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr& shape) {
+  if (shape.words == std::vector<std::string>{"Extrude", "Using Wire"}) return solidOperation(shape);
   if (shape.words.size() != 1 || shape.parts.empty()) return std::nullopt;
   const std::string& kind = shape.words[0];
   // The shapes come last, in braces: { Point{1}; } or, without semicolons, { Duplicata{..} }.

@@ -92,7 +92,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Extrude", &Interpreter::executeShapeOperation},
       {"Field", &Interpreter::defineField},
       {"Fillet", &Interpreter::executeRounding},
-      {"HealShapes ...", &Interpreter::unsupportedStatement},
+      {"HealShapes", &Interpreter::executeHealShapes},
       {"Hide ...", &Interpreter::skipInBatch},
       {"Homology ...", &Interpreter::unsupportedStatement},
       {"Include", &Interpreter::executeInclude},

@@ -2,6 +2,10 @@
 #include "kernel/affine_map.h"
 
 #include <cmath>
+#include <vector>
+#include <utility>
+#include <optional>
+#include <algorithm>
 
 #include "kernel/geometry_error.h"
 
@@ -58,6 +62,60 @@ std::array<double, 16> AffineMap::homogeneous() const {
   }
   h[15] = 1;
   return h;
+}
+
+namespace {
+
+// An orthonormal frame from three points that are not collinear: the first axis along b - a,
+// the second in the plane of the three.
+std::array<Vec3, 3> frameOf(Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 e1 = (b - a) / norm(b - a);
+  const Vec3 side = (c - a) - dot(c - a, e1) * e1;
+  const Vec3 e2 = side / norm(side);
+  return {e1, e2, cross(e1, e2)};
+}
+
+}  // namespace
+
+std::optional<AffineMap> rigidMotion(const std::vector<std::pair<Vec3, Vec3>>& pairs,
+                                     double tolerance) {
+  if (pairs.empty()) return std::nullopt;
+  const Vec3 shift = pairs[0].second - pairs[0].first;
+  AffineMap map = AffineMap::translation(shift);
+  auto fits = [&] {
+    return std::all_of(pairs.begin(), pairs.end(), [&](const auto& p) {
+      return distance(map.apply(p.first), p.second) <= tolerance;
+    });
+  };
+  if (fits()) return map;
+  const Vec3 a = pairs[0].first;
+  std::size_t far = 0, wide = 0;
+  for (std::size_t k = 1; k < pairs.size(); ++k)
+    if (distance(pairs[k].first, a) > distance(pairs[far].first, a)) far = k;
+  const Vec3 axis = pairs[far].first - a;
+  auto offAxis = [&](std::size_t k) { return norm(cross(pairs[k].first - a, axis)); };
+  for (std::size_t k = 1; k < pairs.size(); ++k)
+    if (offAxis(k) > offAxis(wide)) wide = k;
+  if (!(offAxis(wide) > tolerance * norm(axis))) return std::nullopt;
+  const auto from = frameOf(a, pairs[far].first, pairs[wide].first);
+  const auto to = frameOf(pairs[0].second, pairs[far].second, pairs[wide].second);
+  // Rotation R = sum over axes of to[i] from[i]^T; translation takes a onto its image.
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (int i = 0; i < 3; ++i) {
+        const double t[3] = {to[i].x, to[i].y, to[i].z}, f[3] = {from[i].x, from[i].y, from[i].z};
+        sum += t[r] * f[c];
+      }
+      map.m[static_cast<std::size_t>(4 * r + c)] = sum;
+    }
+  map.m[3] = map.m[7] = map.m[11] = 0;
+  const Vec3 moved = map.apply(a);
+  map.m[3] = pairs[0].second.x - moved.x;
+  map.m[7] = pairs[0].second.y - moved.y;
+  map.m[11] = pairs[0].second.z - moved.z;
+  if (!fits()) return std::nullopt;
+  return map;
 }
 
 }  // namespace geomesh

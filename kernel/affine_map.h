@@ -2,6 +2,9 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "kernel/vec3.h"
 
@@ -33,5 +36,12 @@ struct AffineMap {
   // The same map as a 4 x 4 row-major matrix (pivot folded in), for periodicity records.
   std::array<double, 16> homogeneous() const;
 };
+
+// The rigid motion taking each pair's first point onto its second, or nullopt when there is
+// none (within `tolerance`): a translation when all the displacements agree, else the motion
+// fixed by three pairs far from collinear, checked on all of them. (The older form of Periodic
+// Surface, in both kernels.)
+std::optional<AffineMap> rigidMotion(const std::vector<std::pair<Vec3, Vec3>>& pairs,
+                                     double tolerance);
 
 }  // namespace geomesh

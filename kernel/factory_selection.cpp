@@ -2,6 +2,9 @@
 // (kernel/occ).
 #include "kernel/factory_selection.h"
 
+#include <filesystem>
+#include <ostream>
+
 #include "kernel/geo/geo_factory.h"
 #include "kernel/occ/occ_factory.h"
 
@@ -47,6 +50,23 @@ void FactorySelection::clear() {
   factories_->builtIn.clear();
   factories_->occ.clear();
 }
+
+void FactorySelection::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks,
+                                     const std::string& cadPath) const {
+  if (factories_->occ.hasShapes()) {
+    factories_->occ.exportShapes(cadPath);
+    // The factory first, so that the statements after the merge (MeshSize, ...) reach it.
+    out << "SetFactory(\"OpenCASCADE\");\n";
+    out << "Merge \"" << std::filesystem::path(cadPath).filename().string() << "\";\n";
+    factories_->occ.writeUnrolled(out, hooks);
+    bool builtInEntities = false;
+    for (int dim = 0; dim <= 3; ++dim) builtInEntities |= factories_->builtIn.maxTag(dim) > 0;
+    if (builtInEntities) out << "SetFactory(\"Built-in\");\n";  // its entities stay its own
+  }
+  factories_->builtIn.writeUnrolled(out, hooks);
+}
+
+std::vector<int> FactorySelection::tags(int dim) const { return factories_->occFirst.tags(dim); }
 
 bool FactorySelection::hasEntities() const {
   for (int dim = 0; dim <= 3; ++dim)

@@ -31,6 +31,16 @@ class FactorySelection {
   void synchronize(Model& model) const;
   void clear();
   bool hasEntities() const;  // whether any factory holds an entity
+  // The tags of dimension `dim` in either factory, ascending (Surface{:}: a file merged into
+  // the OpenCASCADE model while the built-in factory is selected is listed too).
+  std::vector<int> tags(int dim) const;
+  // The unrolled script (-0, Save "x.geo_unrolled") of both factories. When the OpenCASCADE
+  // factory holds shapes, they are written to the XAO file `cadPath` and the script starts by
+  // selecting that factory and merging the file (by its name: it sits next to the script),
+  // then states their mesh constraints; the built-in factory's entities and the physical
+  // groups follow.
+  void writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks,
+                     const std::string& cadPath) const;
 
  private:
   struct Factories;  // kernel/factory_selection.cpp

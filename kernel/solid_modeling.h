@@ -93,9 +93,47 @@ class SolidModeling {
   // volume); ties keep their order.
   virtual std::vector<EntityId> closest(Vec3 point, const std::vector<EntityId>& shapes) const = 0;
 
-  // ShapeFromFile / Merge of a STEP, IGES or BREP file; Save of a .brep or .step file.
-  virtual std::vector<EntityId> importShapes(const std::string& path) = 0;
+  // Shape healing (HealShapes; and files read with Geometry.OCCFixDegenerated, ...):
+  // degenerated edges and faces repaired, edges and faces smaller than the tolerance removed,
+  // faces sewn into shells, closed shells made solids. The tolerance is Geometry.Tolerance.
+  struct HealingOptions {
+    double tolerance = 1e-8;
+    bool fixDegenerated = false;
+    bool fixSmallEdges = false;
+    bool fixSmallFaces = false;
+    bool sewFaces = false;
+    bool makeSolids = false;
+    bool any() const {
+      return fixDegenerated || fixSmallEdges || fixSmallFaces || sewFaces || makeSolids;
+    }
+  };
+  // How files are read: Geometry.OCCScaling (a scale about the origin), Geometry.OCCTargetUnit
+  // (the length unit STEP and IGES models are converted to: "M", "CM", "MM", ...; empty:
+  // millimetres) and the healing applied to what is read.
+  struct ImportOptions {
+    double scaling = 1;
+    std::string targetUnit;
+    HealingOptions healing;
+  };
+  virtual void setImportOptions(const ImportOptions& options) = 0;
+  // HealShapes: heals the shapes (every shape of the model when `shapes` is empty); they go,
+  // and what healing made of them takes new tags (healing all of them renumbers the model
+  // from 1, as the reference does). Returns the new shapes of the highest dimensions.
+  virtual std::vector<EntityId> healShapes(const std::vector<EntityId>& shapes,
+                                           const HealingOptions& options) = 0;
+
+  // ShapeFromFile (allDimensions false: the shapes of the file's highest dimension) and Merge
+  // (every shape, free faces, curves and points too) of a STEP, IGES, BREP or XAO file. An
+  // XAO file written by geomesh gives its shapes back their tags. Save of a .brep, .step or
+  // .xao file.
+  virtual std::vector<EntityId> importShapes(const std::string& path,
+                                             bool allDimensions = false) = 0;
   virtual void exportShapes(const std::string& path) const = 0;
+  // The groups the last file read lists (an XAO file's <groups>), by the tags their entities
+  // got: Merge makes them physical groups, as the reference does.
+  virtual const std::vector<PhysicalGroup>& importedGroups() const = 0;
+  // Whether the modeler holds any shape.
+  virtual bool hasShapes() const = 0;
 };
 
 }  // namespace geomesh

@@ -200,6 +200,37 @@ std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) 
   return out;
 }
 
+// What a Boolean of inputs of different dimensions (a surface and points, say) lists, as the
+// reference does: from the highest dimension down, every occurrence of a shape in the result
+// (a point inside a face occurs in the face and on its own) that is an input kept as it was
+// or the image that took an input's tag, and, once, each shape not bound before that is not
+// part of a shape of a higher dimension not bound before (the sub-shapes of a new face are not
+// listed, the curves of a face that passed its tag on are). Called before the result is bound
+// (after the tags passed on); gives shapes.
+std::vector<std::pair<int, TopoDS_Shape>> mixedListing(const OccShapes& shapes,
+                                                       const TopoDS_Shape& result,
+                                                       const std::vector<BooleanInput>& inputs) {
+  TopTools_IndexedMapOfShape images, covered, listedNew;
+  for (const BooleanInput& in : inputs) {
+    if (in.unchanged()) images.Add(in.shape);
+    for (const TopoDS_Shape& image : in.modified) images.Add(image);
+  }
+  std::vector<std::pair<int, TopoDS_Shape>> out;
+  for (int dim = 3; dim >= 0; --dim)
+    for (TopExp_Explorer it(result, kTypes[dim]); it.More(); it.Next()) {
+      const TopoDS_Shape& s = it.Current();
+      const bool isNew = !shapes.isBound(dim, s);
+      if (!isNew && images.Contains(s)) {
+        out.emplace_back(dim, s);
+      } else if (isNew && !covered.Contains(s) && !listedNew.Contains(s)) {
+        out.emplace_back(dim, s);
+        listedNew.Add(s);
+        TopExp::MapShapes(s, covered);
+      }
+    }
+  return out;
+}
+
 struct TaggedShape {
   int dim, tag;
   TopoDS_Shape shape;
@@ -311,7 +342,17 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
         !shapes_->contains(in.id.dim, in.id.tag))
       shapes_->bindShape(in.id.dim, in.id.tag, image);
   }
+  const bool mixed = std::any_of(inputs.begin(), inputs.end(), [&](const BooleanInput& in) {
+    return in.id.dim != inputs.front().id.dim;
+  });
+  std::vector<std::pair<int, TopoDS_Shape>> listing;
+  if (mixed) listing = mixedListing(*shapes_, result, inputs);
   std::vector<EntityId> out = bindResult(*shapes_, result);
+  if (mixed) {
+    out.clear();
+    for (const auto& [dim, shape] : listing)
+      if (shapes_->isBound(dim, shape)) out.push_back({dim, shapes_->tagOf(dim, shape)});
+  }
   replacements_ = replacementsOf(*shapes_, inputs);
   return out;
 }

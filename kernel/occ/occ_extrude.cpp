@@ -158,10 +158,16 @@ std::vector<EntityId> OccFactory::extrudeAlongWire(const std::vector<EntityId>& 
       throw GeometryError("Extrude Using Wire: OpenCASCADE could not sweep the shapes");
     return pipe.Shape();
   });
+  // What the inputs made, the lowest dimension first as in the reference: a point's curve,
+  // a curve's surface, a surface's volume.
   std::vector<EntityId> out;
-  for (TopExp_Explorer it(result, kTypes[sweptDim]); it.More(); it.Next()) {
-    const EntityId e{sweptDim, shapes_->bindNew(sweptDim, it.Current())};
-    if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
+  for (int dim = 1; dim <= sweptDim; ++dim) {
+    TopExp_Explorer it = dim == 3 ? TopExp_Explorer(result, kTypes[3])
+                                  : TopExp_Explorer(result, kTypes[dim], kTypes[dim + 1]);
+    for (; it.More(); it.Next()) {
+      const EntityId e{dim, shapes_->bindNew(dim, it.Current())};
+      if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
+    }
   }
   return out;
 }

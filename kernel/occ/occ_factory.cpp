@@ -12,6 +12,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include <algorithm>
@@ -175,6 +176,16 @@ std::vector<int> wireLoop(const OccShapes& s, const TopoDS_Face& face,
   return loop;
 }
 
+// The vertices a face or a solid holds directly, not on its boundary (a point fragmented
+// with it): the mesh goes through them.
+std::vector<int> internalPoints(const OccShapes& s, const TopoDS_Shape& shape) {
+  std::vector<int> points;
+  for (TopoDS_Iterator it(shape); it.More(); it.Next())
+    if (it.Value().ShapeType() == TopAbs_VERTEX && s.isBound(0, it.Value()))
+      points.push_back(s.tagOf(0, it.Value()));
+  return points;
+}
+
 void exportSurfaces(const OccShapes& s, const Extrusions& extrusions, Model& model) {
   for (const auto& [tag, shape] : s.byTag[2]) {
     const TopoDS_Face face = TopoDS::Face(shape.Oriented(TopAbs_FORWARD));
@@ -186,6 +197,7 @@ void exportSurfaces(const OccShapes& s, const Extrusions& extrusions, Model& mod
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())
       if (!it.Current().IsSame(outer))
         surface.loops.push_back(wireLoop(s, face, TopoDS::Wire(it.Current())));
+    surface.embeddedPoints = internalPoints(s, shape);
     model.addSurface(std::move(surface));
   }
 }
@@ -198,6 +210,7 @@ void exportVolumes(const OccShapes& s, const Extrusions& extrusions, Model& mode
       for (TopExp_Explorer face(shell.Current(), TopAbs_FACE); face.More(); face.Next())
         volume.shells.back().push_back(signedTag(s.tagOf(2, face.Current()), face.Current()));
     }
+    volume.embeddedPoints = internalPoints(s, shape);
     model.addVolume(std::move(volume));
   }
 }

@@ -21,8 +21,8 @@ struct OccShapes;  // the shapes and their tags (kernel/occ/occ_shapes.h)
 // Tags follow Gmsh's OpenCASCADE kernel: a shape's sub-shapes not known yet get the next free
 // tags of their dimensions, depth first; tag < 0 asks for the next free tag. Failures throw
 // GeometryError naming the entity and the reason; OpenCASCADE's exceptions never escape.
-// Not offered yet (handed to the built-in factory): the older form of Periodic Surface,
-// physical groups and Geometry.Tolerance (kept by the built-in factory), the unrolled .geo.
+// Not offered (handed to the built-in factory): physical groups and Geometry.Tolerance (kept
+// by the built-in factory).
 class OccFactory final : public GeometryFactory, public SolidModeling {
  public:
   OccFactory();
@@ -125,14 +125,34 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   // ShapeFromFile("x.step"), Merge "x.step" (kernel/occ/occ_import.cpp): the shapes of a
   // STEP, IGES or BREP file, with new tags; returns those of the highest dimension. A missing
   // or unreadable file is a GeometryError naming the path.
-  std::vector<EntityId> importShapes(const std::string& path) override;
-  // Save "x.brep" / "x.step": every entity that is not part of another one.
+  // Read with the import options (scaling, target unit, healing). A .xao file written by
+  // exportShapes gives every entity its tag back; one written elsewhere is read as a BREP.
+  std::vector<EntityId> importShapes(const std::string& path,
+                                     bool allDimensions = false) override;
+  // Save "x.brep" / "x.step" / "x.xao": every entity that is not part of another one (the XAO
+  // file, written atomically, also lists every entity with its tag).
   void exportShapes(const std::string& path) const override;
+  void setImportOptions(const ImportOptions& options) override { importOptions_ = options; }
+  const std::vector<PhysicalGroup>& importedGroups() const override { return importedGroups_; }
+  bool hasShapes() const override;
+
+  // HealShapes (kernel/occ/occ_healing.cpp).
+  std::vector<EntityId> healShapes(const std::vector<EntityId>& shapes,
+                                   const HealingOptions& options) override;
+
+  // The unrolled script's lines for this factory's entities, after the line merging their
+  // XAO file: mesh sizes at points, then the hooks' constraints of each curve, surface and
+  // volume.
+  void writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks) const override;
 
   // Mesh constraints on its entities (kernel/occ/occ_constraints.cpp), recorded by tag as the
   // built-in factory records them on its own.
   void setPeriodic(int dim, const std::vector<int>& slaves, const std::vector<int>& masters,
                    const AffineMap& map) override;
+  // Periodic Surface s {curves} = m {curves}: the rigid motion taking the master's curves
+  // onto the slave's (whichever way each curve runs).
+  void setPeriodicByCurves(int slave, const std::vector<int>& slaveCurves, int master,
+                           const std::vector<int>& masterCurves) override;
   void embed(int dim, const std::vector<int>& tags, int hostDim, int hostTag) override;
   void addCompound(int dim, const std::vector<int>& tags) override;
 
@@ -172,6 +192,8 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
   std::map<int, double> meshSizes_;  // at points
   BooleanOptions booleanOptions_;
   std::vector<Replacement> replacements_;  // of the last Boolean
+  ImportOptions importOptions_;
+  std::vector<PhysicalGroup> importedGroups_;  // of the last file read
 
   int primitiveTag(int dim, int tag, const char* what) const;
   void addChain(int tag, const std::vector<int>& curves, bool closed);

@@ -91,15 +91,25 @@ std::vector<EntityId> OccFactory::boundary(const std::vector<EntityId>& shapes,
   return kept;
 }
 
+// As the reference lists them: a curve's start and end (reversed for a negative tag), the
+// points of a surface or a volume in ascending tags; each point once.
 std::vector<int> OccFactory::pointsOf(const std::vector<EntityId>& shapes) const {
   std::vector<int> out;
   std::set<int> seen;
-  for (const EntityId& e : shapes)
-    for (TopExp_Explorer it(shapes_->find(e.dim, std::abs(e.tag)), TopAbs_VERTEX); it.More();
-         it.Next()) {
-      const int tag = shapes_->tagOf(0, it.Current());
-      if (seen.insert(tag).second) out.push_back(tag);
+  for (const EntityId& e : shapes) {
+    std::vector<int> points;
+    if (e.dim == 1) {
+      for (const EntityId& end : boundaryOf(*shapes_, e)) points.push_back(end.tag);
+    } else {
+      std::set<int> sorted;
+      for (TopExp_Explorer it(shapes_->find(e.dim, std::abs(e.tag)), TopAbs_VERTEX); it.More();
+           it.Next())
+        sorted.insert(shapes_->tagOf(0, it.Current()));
+      points.assign(sorted.begin(), sorted.end());
     }
+    for (int tag : points)
+      if (seen.insert(tag).second) out.push_back(tag);
+  }
   return out;
 }
 

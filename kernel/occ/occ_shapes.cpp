@@ -1,10 +1,14 @@
 // Tag bookkeeping of the OpenCASCADE factory: binding shapes and their sub-shapes to tags.
 #include "kernel/occ/occ_shapes.h"
 
+#include <BRep_Builder.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
+
+#include <set>
 
 #include "kernel/geometry_error.h"
 
@@ -80,6 +84,37 @@ int OccShapes::bindNew(int dim, const TopoDS_Shape& s) {
   const int tag = isBound(dim, s) ? tagOf(dim, s) : maxTag(dim) + 1;
   bindTree(dim, tag, s);
   return tag;
+}
+
+std::vector<EntityId> bindShapes(OccShapes& shapes, const TopoDS_Shape& shape,
+                                 bool allDimensions) {
+  std::vector<EntityId> top;
+  std::set<EntityId> listed;
+  for (int dim = 3; dim >= 0; --dim) {
+    TopExp_Explorer it = dim == 3 ? TopExp_Explorer(shape, kShapeTypes[3])
+                                  : TopExp_Explorer(shape, kShapeTypes[dim], kShapeTypes[dim + 1]);
+    const bool first = top.empty();
+    for (; it.More(); it.Next()) {
+      const EntityId e{dim, shapes.bindNew(dim, it.Current())};
+      if (first && listed.insert(e).second) top.push_back(e);
+    }
+    if (!top.empty() && !allDimensions) break;
+  }
+  return top;
+}
+
+TopoDS_Shape compoundOfAll(const OccShapes& shapes) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  TopTools_IndexedMapOfShape inside;
+  for (int dim = 3; dim >= 0; --dim)
+    for (const auto& [tag, shape] : shapes.byTag[dim]) {
+      if (inside.Contains(shape)) continue;
+      builder.Add(all, shape);
+      for (int sub = dim - 1; sub >= 0; --sub) TopExp::MapShapes(shape, kShapeTypes[sub], inside);
+    }
+  return all;
 }
 
 void OccShapes::unbind(int dim, int tag, bool recursive) {

@@ -60,6 +60,15 @@ struct OccShapes {
   void bindOne(int dim, int tag, const TopoDS_Shape& s);
 };
 
+// Binds the shapes of `shape` (a compound, say) under new tags, as the reference binds what it
+// reads: its solids, then the faces outside them, the edges outside those, the free vertices;
+// allDimensions false: only the shapes of the highest dimension present. Returns the shapes
+// of the highest dimension present, in that order.
+std::vector<EntityId> bindShapes(OccShapes& shapes, const TopoDS_Shape& shape, bool allDimensions);
+
+// Every bound shape that is not part of another one, as one compound.
+TopoDS_Shape compoundOfAll(const OccShapes& shapes);
+
 // Runs `build`, turning an OpenCASCADE failure into a GeometryError "what: reason".
 template <class Build>
 decltype(auto) guarded(const std::string& what, Build build);

@@ -157,6 +157,78 @@ TEST(OccStatements, ErrorsPointAtTheStatementWithTheReason) {
             "test.geo:2:1: error: Volume 1 is not defined");
 }
 
+// HealShapes; heals everything and renumbers from 1; HealShapes{..} (beyond the reference)
+// heals the shapes given; the options are the Geometry.OCC* healing options.
+TEST(OccStatements, HealShapes) {
+  EXPECT_EQ(printed(kOcc + "Box(5) = {0, 0, 0, 1, 1, 1};\nSphere(9) = {3, 0, 0, 0.5};\n"
+                    "HealShapes;\nv() = Volume{:}; c() = Curve{:};\n"
+                    "Printf(\"%g %g %g\", v(0), v(1), #c());\n"
+                    "Geometry.OCCFixSmallEdges = 1;\nHealShapes{ Volume{2}; }\n"
+                    "v() = Volume{:}; c() = Curve{:};\n"
+                    "Printf(\"%g %g %g\", v(0), v(1), #c());\n"),
+            "1 2 15\n1 2 13\n");  // the sphere, of the largest tag, takes it again
+  ScriptRun builtIn;
+  builtIn.run("Point(1) = {0, 0, 0};\nHealShapes;\n");
+  ASSERT_EQ(builtIn.log.warnings.size(), 1u);
+  EXPECT_NE(builtIn.log.warnings[0].find("needs SetFactory(\"OpenCASCADE\")"), std::string::npos);
+  EXPECT_EQ(firstLineOf(kOcc + "HealShapes{ Volume{4}; }\n"),
+            "test.geo:2:1: error: Volume 4 is not defined");
+  EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                               "Geometry.OCCTargetUnit = \"LY\";\n"
+                               "v() = ShapeFromFile(\"/no/such/part.step\");\n")
+                .rfind("test.geo:4:7: error:", 0),
+            0u);
+}
+
+// The older form of Periodic Surface on OpenCASCADE surfaces: the translation follows from
+// the curves, whichever way each runs; curves that match no rigid motion are an error.
+TEST(OccStatements, PeriodicSurfaceByCurves) {
+  ScriptRun run;
+  run.run(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                 "Periodic Surface 2 {5, 8, 7, 6} = 1 {1, 4, 3, 2};\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+  run.session.synchronize();
+  const ModelSurface* slave = run.session.model().surface(2);
+  ASSERT_TRUE(slave && slave->periodic);
+  EXPECT_EQ(slave->periodic->master, 1);
+  const std::vector<double> translation{1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  ASSERT_EQ(slave->periodic->affine.size(), 16u);
+  for (std::size_t i = 0; i < 16; ++i)
+    EXPECT_NEAR(slave->periodic->affine[i], translation[i], 1e-12) << i;
+  EXPECT_EQ(firstLineOf(kOcc + "Box(1) = {0, 0, 0, 1, 1, 1};\n"
+                               "Periodic Surface 2 {5, 8, 7, 6} = 1 {1, 9, 3, 2};\n"),
+            "test.geo:3:1: error: Periodic Surface 2: its curves are not the image of those of "
+            "surface 1 by a translation or a rotation");
+}
+
+// Points fragmented with a surface and a volume are embedded in them (or in the face they lie
+// on) and keep their tags; a point outside stays free.
+TEST(OccStatements, FragmentsOfPointsEmbedThem) {
+  ScriptRun run;
+  run.run(kOcc + "Rectangle(1) = {0, 0, 0, 1, 1};\nPoint(10) = {0.5, 0.5, 0};\n"
+                 "Point(11) = {0.2, 0.7, 0};\nPoint(12) = {3, 3, 3};\n"
+                 "r() = BooleanFragments{ Surface{1}; Delete; }{ Point{10, 11, 12}; Delete; };\n"
+                 "Box(5) = {5, 0, 0, 1, 1, 1};\nPoint(30) = {5.5, 0.5, 0.5};\n"
+                 "Point(31) = {5.25, 0.5, 1};\n"
+                 "q() = BooleanFragments{ Volume{5}; Delete; }{ Point{30, 31}; Delete; };\n"
+                 "Printf(\"%g %g %g %g %g %g %g %g %g\", #r(), r(0), r(4), r(7), r(9), #q(), "
+                 "q(1), q(7), q(10));\n");
+  // The lists as the reference gives them: 1 1 2 3 4 10 11 12 10 11 (the surface, its new
+  // curves, the points, those inside it again) and 5 2 3 4 5 6 7 30 31 31 30.
+  EXPECT_EQ(run.out.str(), "10 1 4 12 11 11 2 30 30\n");
+  run.session.synchronize();
+  const Model& model = run.session.model();
+  std::vector<int> inSurface = model.surface(1)->embeddedPoints;
+  std::sort(inSurface.begin(), inSurface.end());
+  EXPECT_EQ(inSurface, (std::vector<int>{10, 11}));
+  EXPECT_EQ(model.volume(5)->embeddedPoints, std::vector<int>{30});
+  int onFace = 0;
+  for (const auto& [tag, surface] : model.surfaces())
+    if (surface.embeddedPoints == std::vector<int>{31}) onFace = tag;
+  EXPECT_NE(onFace, 0) << "point 31 is embedded in no face of the box";
+  EXPECT_TRUE(model.points().contains(12));
+}
+
 TEST(OccStatements, BuiltInEntitiesAreRefusedByOpenCascadeOperations) {
   const std::string message =
       firstLineOf("Point(100) = {0, 0, 0};\nSetFactory(\"OpenCASCADE\");\n"

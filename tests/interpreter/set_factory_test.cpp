@@ -117,7 +117,7 @@ TEST(SetFactory, BoundaryOfABox) {
             (std::vector<int>{1, 2, 3, 4, 5, 6}));
 }
 
-// The older form of Periodic Surface is not the OpenCASCADE factory's yet: on surfaces of the
+// The older form of Periodic Surface on surfaces of the
 // built-in kernel, that kernel carries it out, saying so once.
 TEST(SetFactory, BuiltInKernelCarriesOutWhatOpenCascadeCannotYetAndSaysSoOnce) {
   ScriptRun run;

@@ -115,7 +115,8 @@ TEST(FallbackFactory, HandsOverWhatThePrimaryCannotDo) {
   geo.addPoint(20, {5, 0, 0}, 0.5);  // built-in entities beside the box
   geo.addPoint(21, {6, 0, 0}, 0.5);
   geo.addLine(30, 20, 21);
-  // Not offered by the OpenCASCADE factory: the built-in one tries (and finds no surface 2).
+  // Curves of the built-in kernel are not the OpenCASCADE factory's to match: the built-in
+  // one tries (and finds no surface 2).
   EXPECT_THROW(factory.setPeriodicByCurves(2, {30}, 1, {30}), GeometryError);
   EXPECT_EQ(handovers.operations, (std::vector<std::string>{"Periodic"}));
   EXPECT_TRUE(occ.contains({3, 1}));

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_factory.h"
@@ -50,6 +51,54 @@ TEST(OccImport, BadFilesNameThePath) {
   EXPECT_THROW(occ.importShapes(garbage), GeometryError);
   std::filesystem::remove(garbage);
   EXPECT_THROW(occ.importShapes(scratch::path("occ-part.xyz")), GeometryError);
+}
+
+// An XAO file geomesh writes gives every entity its tag back, gaps and free points included;
+// one without tags (the reference's) numbers them as a BREP file would.
+TEST(OccImport, XaoKeepsTags) {
+  OccFactory occ = boxAndBall();
+  occ.addPoint(100, {7, 7, 7}, 0);
+  const std::string path = scratch::path("occ-tags.xao");
+  occ.exportShapes(path);
+  OccFactory read;
+  const std::vector<EntityId> top = read.importShapes(path, true);
+  EXPECT_EQ(top, (std::vector<EntityId>{{3, 1}, {3, 2}}));
+  for (int dim = 0; dim <= 3; ++dim) EXPECT_EQ(read.tags(dim), occ.tags(dim)) << dim;
+  for (int p : occ.tags(0)) {
+    const Vec3 a = occ.pointCoordinates(p), b = read.pointCoordinates(p);
+    EXPECT_TRUE(a.x == b.x && a.y == b.y && a.z == b.z) << "point " << p;
+  }
+  EXPECT_NEAR(read.volume(2), 4 * std::numbers::pi / 3, 1e-6);
+  // Tags already taken: the shapes get new ones instead.
+  const std::vector<EntityId> again = read.importShapes(path, true);
+  EXPECT_EQ(again, (std::vector<EntityId>{{3, 3}, {3, 4}}));
+  std::filesystem::remove(path);
+}
+
+TEST(OccImport, XaoWithoutTagsIsNumberedAsItsShape) {
+  const std::string path = scratch::path("occ-untagged.xao");
+  boxAndBall().exportShapes(path);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xao = text.str();
+  for (std::size_t at = xao.find(" tag=\""); at != std::string::npos; at = xao.find(" tag=\""))
+    xao.erase(at, xao.find('"', at + 6) + 1 - at);
+  in.close();
+  std::ofstream(path) << xao;
+  OccFactory read;
+  read.addBox(7, {20, 0, 0}, {1, 1, 1});
+  EXPECT_EQ(read.importShapes(path, true), (std::vector<EntityId>{{3, 8}, {3, 9}}));
+  EXPECT_EQ(read.tags(2).size(), 6u + 6u + 1u + 1u);  // the free rectangle too
+  std::filesystem::remove(path);
+}
+
+TEST(OccImport, NotAnXaoFile) {
+  const std::string path = scratch::path("occ-bad.xao");
+  std::ofstream(path) << "<XAO><geometry/></XAO>\n";
+  OccFactory occ;
+  EXPECT_THROW(occ.importShapes(path), GeometryError);
+  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+// Extrude{..} Using Wire{..} as a value: the pipe's entities.
+SetFactory("OpenCASCADE");
+Point(1) = {0, 0, 0};
+Point(2) = {0, 0.5, 1};
+Point(3) = {0, 1, 3};
+Spline(1) = {1, 2, 3};
+Wire(2) = {1};
+Disk(1) = {0, 0, 0, 0.3};
+out[] = Extrude{ Surface{1}; } Using Wire{2};
+Printf("extrude: %g entities, first %g", #out[], out[0]);
+v() = Volume{:}; s() = Surface{:}; c() = Curve{:};
+Printf("%g volumes, %g surfaces, %g curves", #v(), #s(), #c());
+Rectangle(10) = {5, 0, 0, 1, 1};
+Point(20) = {5, 0, 0};
+Point(21) = {6, 0, 0};
+Line(20) = {20, 21};
+o2() = Extrude{ Surface{10}; Curve{20}; } Using Wire{2};
+Printf("second: %g entities: %g %g", #o2(), o2(0), o2(1));
+v() = Volume{:}; s() = Surface{:}; c() = Curve{:};
+Printf("%g volumes, last %g; %g surfaces, last %g; %g curves", #v(), v(#v()-1), #s(), s(#s()-1), #c());
+b() = BoundingBox Volume{out[0]};
+Printf("pipe box %.4g %.4g %.4g %.4g %.4g %.4g", b(0), b(1), b(2), b(3), b(4), b(5));
