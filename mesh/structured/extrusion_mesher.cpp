@@ -213,9 +213,8 @@ struct Sweep {
   Mesh& mesh;
 };
 
-void meshSweptCurve(const Sweep& s, const ModelCurve& curve) {
+void meshSweptCurve(const Sweep& s, const ModelCurve& curve, const ExtrusionRecord& record) {
   const EntityId id{1, curve.tag};
-  const ExtrusionRecord& record = *curve.extrusion;
   const ModelPoint* source = s.model.point(record.source);
   const bool fromStart = curve.startPoint == record.source;
   if (!source || (!fromStart && curve.endPoint != record.source))
@@ -363,29 +362,6 @@ void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRe
   EntityMesh& em = s.mesh.entity(id);
   for (NodeIndex n : newNodes) addSurfaceNode(s.mesh, top, em, n);
   storeFaces(s.mesh, top, std::move(faces), em);
-}
-
-// Meshes the entities of `tops` whose source is meshed, until none is left; `meshed` tells.
-template <typename Meshed, typename MeshOne>
-void meshImages(const std::map<int, const ExtrusionRecord*>& tops, int dim, Meshed meshed,
-                MeshOne meshOne) {
-  std::map<int, const ExtrusionRecord*> pending = tops;
-  while (!pending.empty()) {
-    bool progress = false;
-    for (auto it = pending.begin(); it != pending.end();) {
-      if (!meshed(it->second->source)) {
-        ++it;
-        continue;
-      }
-      meshOne(it->first, *it->second);
-      it = pending.erase(it);
-      progress = true;
-    }
-    if (!progress)
-      throw MeshError({dim, pending.begin()->first},
-                      "its source " + std::to_string(pending.begin()->second->source) +
-                          " has no mesh to copy");
-  }
 }
 
 bool isMeshed(const Mesh& mesh, EntityId e) {
@@ -565,21 +541,65 @@ ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
   for (const auto& [tag, surface] : model.surfaces())
-    if (hasLayers(surface.extrusion) && model.curve(surface.extrusion->top))
+    if (hasLayers(surface.extrusion) && model.curve(surface.extrusion->top)) {
       topCurves_[surface.extrusion->top] = &*surface.extrusion;
+      implySideSweeps(surface);
+    }
   for (const auto& [tag, volume] : model.volumes())
     if (hasLayers(volume.extrusion) && model.surface(volume.extrusion->top))
       topSurfaces_[volume.extrusion->top] = &*volume.extrusion;
 }
 
-bool ExtrusionMesher::meshesCurve(int tag) const {
-  const ModelCurve* curve = model_.curve(tag);
-  return topCurves_.contains(tag) || (curve && hasLayers(curve->extrusion));
+const ExtrusionRecord* ExtrusionMesher::sweepRecord(int curveTag) const {
+  const ModelCurve* curve = model_.curve(curveTag);
+  if (curve && hasLayers(curve->extrusion)) return &*curve->extrusion;
+  const auto it = impliedSweeps_.find(curveTag);
+  return it == impliedSweeps_.end() ? nullptr : &it->second;
 }
 
-bool ExtrusionMesher::meshesSurface(int tag) const {
-  const ModelSurface* surface = model_.surface(tag);
-  return topSurfaces_.contains(tag) || (surface && hasLayers(surface->extrusion));
+// A curve bounding a layered sweep of a curve, from an end of the source to an end of the top,
+// is the sweep of that end with the same layers, whether or not the kernel says so (the
+// OpenCASCADE factory records the sweeps of the extruded entities' boundaries, not of theirs).
+void ExtrusionMesher::implySideSweeps(const ModelSurface& surface) {
+  const ExtrusionRecord& record = *surface.extrusion;
+  const ModelCurve* source = model_.curve(record.source);
+  const ModelCurve* top = model_.curve(record.top);
+  if (!source || !top) return;
+  auto isEnd = [](const ModelCurve& c, int point) {
+    return point == c.startPoint || point == c.endPoint;
+  };
+  for (int signedTag : model_.boundary({2, surface.tag})) {
+    const ModelCurve* side = model_.curve(std::abs(signedTag));
+    if (!side || side == source || side == top || side->extrusion ||
+        side->startPoint == side->endPoint)
+      continue;
+    for (const auto& [from, to] : {std::pair{side->startPoint, side->endPoint},
+                                  std::pair{side->endPoint, side->startPoint}}) {
+      const ModelPoint* a = model_.point(from);
+      const ModelPoint* b = model_.point(to);
+      if (!a || !b || !isEnd(*source, from) || !isEnd(*top, to) ||
+          distance(record.motion->apply(a->xyz, 1), b->xyz) > tolerance_)
+        continue;
+      impliedSweeps_.try_emplace(side->tag, ExtrusionRecord{from, record.layers, to, record.motion});
+      break;
+    }
+  }
+}
+
+bool ExtrusionMesher::sweeps(EntityId id) const {
+  if (id.dim == 1) return sweepRecord(id.tag) != nullptr;
+  if (id.dim == 2) {
+    const ModelSurface* surface = model_.surface(id.tag);
+    return surface && hasLayers(surface->extrusion);
+  }
+  return id.dim == 3 && meshesVolume(id.tag);
+}
+
+const ExtrusionRecord* ExtrusionMesher::imageRecord(EntityId id) const {
+  const std::map<int, const ExtrusionRecord*>& tops = id.dim == 1 ? topCurves_ : topSurfaces_;
+  if (id.dim != 1 && id.dim != 2) return nullptr;
+  const auto it = tops.find(id.tag);
+  return it == tops.end() ? nullptr : it->second;
 }
 
 bool ExtrusionMesher::meshesVolume(int tag) const {
@@ -587,28 +607,24 @@ bool ExtrusionMesher::meshesVolume(int tag) const {
   return volume && hasLayers(volume->extrusion);
 }
 
-void ExtrusionMesher::meshCurves(Mesh& mesh) const {
+void ExtrusionMesher::meshSwept(EntityId id, Mesh& mesh) const {
   const Sweep s{model_, tolerance_, mesh};
-  for (const auto& [tag, curve] : model_.curves())
-    if (hasLayers(curve.extrusion) && !topCurves_.contains(tag))
-      meshSweptCurve(s, curve);
-  meshImages(
-      topCurves_, 1, [&](int source) { return isMeshed(mesh, {1, source}); },
-      [&](int tag, const ExtrusionRecord& record) {
-        meshImageCurve(s, *model_.curve(tag), record);
-      });
+  if (id.dim == 1)
+    meshSweptCurve(s, *model_.curve(id.tag), *sweepRecord(id.tag));
+  else
+    meshSweptSurface(s, *model_.surface(id.tag));
 }
 
-void ExtrusionMesher::meshSurfaces(Mesh& mesh) const {
+void ExtrusionMesher::meshImage(EntityId id, Mesh& mesh) const {
+  const ExtrusionRecord* record = imageRecord(id);
+  if (!record) throw MeshError(id, "it is the top of no extrusion with layers");
+  if (!isMeshed(mesh, {id.dim, record->source}))
+    throw MeshError(id, "its source " + std::to_string(record->source) + " has no mesh to copy");
   const Sweep s{model_, tolerance_, mesh};
-  for (const auto& [tag, surface] : model_.surfaces())
-    if (hasLayers(surface.extrusion) && !topSurfaces_.contains(tag))
-      meshSweptSurface(s, surface);
-  meshImages(
-      topSurfaces_, 2, [&](int source) { return isMeshed(mesh, {2, source}); },
-      [&](int tag, const ExtrusionRecord& record) {
-        meshImageSurface(s, *model_.surface(tag), record);
-      });
+  if (id.dim == 1)
+    meshImageCurve(s, *model_.curve(id.tag), *record);
+  else
+    meshImageSurface(s, *model_.surface(id.tag), *record);
 }
 
 void ExtrusionMesher::meshVolumes(Mesh& mesh) const {
