@@ -138,9 +138,11 @@ Vec3 faceNormal(const Mesh& mesh, std::span<const NodeIndex> f) {
   return cross(c - a, mesh.node(f[3]) - b);
 }
 
-// Whether most of a sample of the faces turn like the surface's parametrization (du x dv).
+// Whether a sample of the faces turns, on the whole, like the surface's parametrization
+// (du x dv): each face weighs its area, so that the slivers and collapsed faces along a rotation
+// axis, where projections are unreliable and du x dv vanishes, cannot outvote the others.
 bool agreesWithSurface(const Mesh& mesh, const SurfaceGeometry& g, const Faces& faces) {
-  int votes = 0;
+  double agreement = 0;
   for (int size : {3, 4}) {
     const std::vector<NodeIndex>& nodes = size == 3 ? faces.triangles : faces.quadrangles;
     const std::size_t count = nodes.size() / static_cast<std::size_t>(size);
@@ -150,10 +152,12 @@ bool agreesWithSurface(const Mesh& mesh, const SurfaceGeometry& g, const Faces& 
       Vec3 centre;
       for (NodeIndex n : f) centre = centre + mesh.node(n) / static_cast<double>(size);
       const SurfaceDerivatives d = g.firstDerivatives(g.project(centre));
-      votes += dot(faceNormal(mesh, f), cross(d.du, d.dv)) > 0 ? 1 : -1;
+      const Vec3 normal = cross(d.du, d.dv);
+      const double length = norm(normal);
+      if (length > 0) agreement += dot(faceNormal(mesh, f), normal) / length;
     }
   }
-  return votes >= 0;
+  return agreement >= 0;
 }
 
 // Stores the faces on the surface, turned to agree with its parametrization.
