@@ -563,7 +563,7 @@ const ExtrusionRecord* ExtrusionMesher::sweepRecord(int curveTag) const {
 
 // A curve bounding a layered sweep of a curve, from an end of the source to an end of the top,
 // is the sweep of that end with the same layers, whether or not the kernel says so (the
-// OpenCASCADE factory records the sweeps of the extruded entities' boundaries, not of theirs).
+// OpenCASCADE factory records the sweeps of an extruded surface's curves, not of its corners).
 void ExtrusionMesher::implySideSweeps(const ModelSurface& surface) {
   const ExtrusionRecord& record = *surface.extrusion;
   const ModelCurve* source = model_.curve(record.source);
@@ -600,8 +600,8 @@ bool ExtrusionMesher::sweeps(EntityId id) const {
 }
 
 const ExtrusionRecord* ExtrusionMesher::imageRecord(EntityId id) const {
-  const std::map<int, const ExtrusionRecord*>& tops = id.dim == 1 ? topCurves_ : topSurfaces_;
   if (id.dim != 1 && id.dim != 2) return nullptr;
+  const std::map<int, const ExtrusionRecord*>& tops = id.dim == 1 ? topCurves_ : topSurfaces_;
   const auto it = tops.find(id.tag);
   return it == tops.end() ? nullptr : it->second;
 }
