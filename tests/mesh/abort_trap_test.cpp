@@ -6,7 +6,11 @@
 #include <cassert>
 #include <csignal>
 #include <cstdlib>
+#include <cstdio>
 #include <stdexcept>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace geomesh {
 namespace {
@@ -32,6 +36,20 @@ TEST(AbortTrap, ExceptionsPassThroughAndTheHandlerIsRestored) {
   struct sigaction now {};
   sigaction(SIGABRT, nullptr, &now);
   EXPECT_EQ(now.sa_handler, SIG_DFL);
+}
+
+TEST(AbortTrap, StandardErrorIsSilencedDuringTheCallOnly) {
+  struct stat before {}, during {}, after {};
+  ASSERT_EQ(fstat(STDERR_FILENO, &before), 0);
+  EXPECT_FALSE(runTrappingAbort([&] {
+    std::fprintf(stderr, "this assertion message is discarded\n");
+    fstat(STDERR_FILENO, &during);
+    std::abort();
+  }));
+  ASSERT_EQ(fstat(STDERR_FILENO, &after), 0);
+  EXPECT_TRUE(S_ISCHR(during.st_mode));  // /dev/null
+  EXPECT_EQ(after.st_dev, before.st_dev);
+  EXPECT_EQ(after.st_ino, before.st_ino);
 }
 
 }  // namespace
