@@ -92,15 +92,12 @@ void OccShapes::unbind(int dim, int tag, bool recursive) {
   constraints.erase({dim, tag});
   if (!recursive) return;
   // From the highest dimension down: a sub-shape of `shape` stays when a shape still bound
-  // (of a higher dimension) holds it, or a curve loop or surface loop of the script does (so
-  // that the curves of a deleted surface keep their tags while its curve loop exists).
+  // (of a higher dimension) holds it.
   for (int sub = dim - 1; sub >= 0; --sub) {
     TopTools_IndexedMapOfShape used;
     for (int up = sub + 1; up <= 3; ++up)
       for (const auto& entry : byTag[up])
         TopExp::MapShapes(entry.second, kShapeTypes[sub], used);
-    for (const auto* loops : {&wires, &shells})
-      for (const auto& entry : *loops) TopExp::MapShapes(entry.second, kShapeTypes[sub], used);
     for (TopExp_Explorer it(shape, kShapeTypes[sub]); it.More(); it.Next())
       if (isBound(sub, it.Current()) && !used.Contains(it.Current())) {
         const int subTag = tagOf(sub, it.Current());
