@@ -10,6 +10,7 @@
 
 #include "mesh/curves/curve_mesher.h"
 #include "mesh/structured/extrusion_mesher.h"
+#include "mesh/structured/meshing_order.h"
 #include "mesh/sizes/size_field.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/structured/periodic.h"
@@ -53,6 +54,26 @@ void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fi
     em.nodes.push_back(node);
     em.block(ElementType::Point1).nodes.push_back(node);
   }
+}
+
+// Curves in meshingOrder: sweeps and copies after what they copy.
+void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fields,
+                Mesh& mesh) {
+  const std::map<int, Periodicity> links = periodicCurves(model);
+  const ExtrusionMesher extruded(model);
+  const PeriodicCopier periodic(model);
+  for (const PlannedEntity& p : meshingOrder(model, 1, links)) {
+    const EntityId id{1, p.tag};
+    if (p.method == MeshingMethod::Own)
+      meshCurve(model, *model.curve(p.tag), rules, mesh, &fields);
+    else if (p.method == MeshingMethod::Swept)
+      extruded.meshSwept(id, mesh);
+    else if (p.method == MeshingMethod::ExtrusionImage)
+      extruded.meshImage(id, mesh);
+    else
+      periodic.copyCurve(p.tag, links.at(p.tag), mesh);
+  }
+  periodic.linkEndPoints(links, mesh);
 }
 
 // Recombine Surface{t} = angle, else Mesh.RecombineAll with the default angle; nullopt: none.
@@ -123,7 +144,6 @@ const SurfaceAlgorithm& surfaceAlgorithm(const SurfaceStage& stage, const ModelS
 }
 
 void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh& mesh) {
-  if (isPeriodicSurface(surface)) return;  // the image of its master: copyPeriodicSurfaces
   const Model& model = stage.model;
   const MeshOptions& options = stage.options;
   const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
@@ -172,10 +192,18 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");
   const ExtrusionMesher extruded(model);
-  for (const auto& [tag, surface] : model.surfaces())
-    if (!extruded.meshesSurface(tag)) meshOneSurface(stage, surface, mesh);
-  extruded.meshSurfaces(mesh);
-  copyPeriodicSurfaces(model, mesh);
+  const PeriodicCopier periodic(model);
+  for (const PlannedEntity& p : meshingOrder(model, 2, {})) {
+    const EntityId id{2, p.tag};
+    if (p.method == MeshingMethod::Own)
+      meshOneSurface(stage, *model.surface(p.tag), mesh);
+    else if (p.method == MeshingMethod::Swept)
+      extruded.meshSwept(id, mesh);
+    else if (p.method == MeshingMethod::ExtrusionImage)
+      extruded.meshImage(id, mesh);
+    else
+      periodic.copySurface(p.tag, mesh);
+  }
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);
@@ -210,13 +238,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
     const StageTimer timer(1);
-    const std::map<int, Periodicity> periodic = periodicCurves(model);
-    const ExtrusionMesher extruded(model);
-    for (const auto& [tag, curve] : model.curves())
-      if (!periodic.contains(tag) && !extruded.meshesCurve(tag))
-        meshCurve(model, curve, rules, mesh, &fields);
-    extruded.meshCurves(mesh);
-    copyPeriodicCurves(model, periodic, mesh);
+    meshCurves(model, rules, fields, mesh);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {

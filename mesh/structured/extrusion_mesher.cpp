@@ -1,4 +1,4 @@
-// ExtrusionMesher: layered sweeps into segments, quads or triangles, prisms, hexahedra, tets.
+// ExtrusionMesher: layered sweeps of points and curves, extrusion tops, and what is swept how.
 #include "mesh/structured/extrusion_mesher.h"
 
 #include <algorithm>
@@ -10,6 +10,7 @@
 
 #include "mesh/curves/curve_mesher.h"
 #include "mesh/core/mesh_error.h"
+#include "mesh/structured/swept_volume.h"
 
 namespace geomesh {
 namespace {
@@ -18,8 +19,10 @@ bool hasLayers(const std::optional<ExtrusionRecord>& record) {
   return record && record->motion && !record->layers.elements.empty();
 }
 
-// The normalized heights of the layer boundaries, from 0 to 1: layer i adds elements[i] equal
-// steps up to heights[i].
+}  // namespace
+
+namespace extrusion {
+
 std::vector<double> layerFractions(const ExtrusionLayers& layers, EntityId id) {
   if (layers.elements.size() != layers.heights.size())
     throw MeshError(id, "Layers has " + std::to_string(layers.elements.size()) +
@@ -40,54 +43,9 @@ std::vector<double> layerFractions(const ExtrusionLayers& layers, EntityId id) {
   return f;
 }
 
-// The parameter of the curve point nearest to p, by Newton's method from `guess`.
-double curveParameter(const CurveGeometry& g, Vec3 p, double guess) {
-  const Interval r = g.range();
-  double t = std::clamp(guess, r.min, r.max);
-  for (int iteration = 0; iteration < 30; ++iteration) {
-    const Vec3 d = g.point(t) - p, d1 = g.firstDerivative(t), d2 = g.secondDerivative(t);
-    const double slope = dot(d1, d1) + dot(d, d2);
-    if (!(slope > 0)) break;
-    const double step = dot(d, d1) / slope;
-    t = std::clamp(t - step, r.min, r.max);
-    if (std::abs(step) <= 1e-15 * (r.max - r.min)) break;
-  }
-  return t;
-}
-
-// Finds existing nodes by position, within a tolerance, through a hash grid.
-class NodeLocator {
- public:
-  NodeLocator(const Mesh& mesh, double tolerance)
-      : mesh_(mesh), tolerance_(tolerance), cell_(4 * tolerance) {}
-
-  void add(NodeIndex n) { cells_[key(mesh_.node(n))].push_back(n); }
-
-  std::optional<NodeIndex> find(Vec3 p) const {
-    const auto [x, y, z] = key(p);
-    for (long long i = x - 1; i <= x + 1; ++i)
-      for (long long j = y - 1; j <= y + 1; ++j)
-        for (long long k = z - 1; k <= z + 1; ++k)
-          if (const auto it = cells_.find({i, j, k}); it != cells_.end())
-            for (NodeIndex n : it->second)
-              if (distance(mesh_.node(n), p) <= tolerance_) return n;
-    return std::nullopt;
-  }
-
- private:
-  using Key = std::tuple<long long, long long, long long>;
-  Key key(Vec3 p) const {
-    return {std::llround(p.x / cell_), std::llround(p.y / cell_), std::llround(p.z / cell_)};
-  }
-
-  const Mesh& mesh_;
-  double tolerance_, cell_;
-  std::map<Key, std::vector<NodeIndex>> cells_;
-};
-
 // The nodes of the entity's boundary and of their boundaries, down to points.
-void addClosure(const Model& model, const Mesh& mesh, EntityId e, NodeLocator& locator,
-                std::set<EntityId>& seen) {
+static void addClosure(const Model& model, const Mesh& mesh, EntityId e,
+                       NodeLocator& locator, std::set<EntityId>& seen) {
   for (int tag : model.boundary(e)) {
     const EntityId b{e.dim - 1, std::abs(tag)};
     if (!seen.insert(b).second) continue;
@@ -105,6 +63,31 @@ NodeLocator closureLocator(const Model& model, const Mesh& mesh, EntityId e, dou
 }
 
 std::string nodeText(NodeIndex n) { return "node " + std::to_string(n + 1); }
+
+}  // namespace extrusion
+
+namespace {
+
+using extrusion::closureLocator;
+using extrusion::layerFractions;
+using extrusion::nodeText;
+using extrusion::NodeLocator;
+using extrusion::Sweep;
+
+// The parameter of the curve point nearest to p, by Newton's method from `guess`.
+double curveParameter(const CurveGeometry& g, Vec3 p, double guess) {
+  const Interval r = g.range();
+  double t = std::clamp(guess, r.min, r.max);
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const Vec3 d = g.point(t) - p, d1 = g.firstDerivative(t), d2 = g.secondDerivative(t);
+    const double slope = dot(d1, d1) + dot(d, d2);
+    if (!(slope > 0)) break;
+    const double step = dot(d, d1) / slope;
+    t = std::clamp(t - step, r.min, r.max);
+    if (std::abs(step) <= 1e-15 * (r.max - r.min)) break;
+  }
+  return t;
+}
 
 // Faces of a surface, as flat connectivity.
 struct Faces {
@@ -138,9 +121,11 @@ Vec3 faceNormal(const Mesh& mesh, std::span<const NodeIndex> f) {
   return cross(c - a, mesh.node(f[3]) - b);
 }
 
-// Whether most of a sample of the faces turn like the surface's parametrization (du x dv).
+// Whether a sample of the faces turns, on the whole, like the surface's parametrization
+// (du x dv): each face weighs its area, so that the slivers and collapsed faces along a rotation
+// axis, where projections are unreliable and du x dv vanishes, cannot outvote the others.
 bool agreesWithSurface(const Mesh& mesh, const SurfaceGeometry& g, const Faces& faces) {
-  int votes = 0;
+  double agreement = 0;
   for (int size : {3, 4}) {
     const std::vector<NodeIndex>& nodes = size == 3 ? faces.triangles : faces.quadrangles;
     const std::size_t count = nodes.size() / static_cast<std::size_t>(size);
@@ -150,10 +135,12 @@ bool agreesWithSurface(const Mesh& mesh, const SurfaceGeometry& g, const Faces& 
       Vec3 centre;
       for (NodeIndex n : f) centre = centre + mesh.node(n) / static_cast<double>(size);
       const SurfaceDerivatives d = g.firstDerivatives(g.project(centre));
-      votes += dot(faceNormal(mesh, f), cross(d.du, d.dv)) > 0 ? 1 : -1;
+      const Vec3 normal = cross(d.du, d.dv);
+      const double length = norm(normal);
+      if (length > 0) agreement += dot(faceNormal(mesh, f), normal) / length;
     }
   }
-  return votes >= 0;
+  return agreement >= 0;
 }
 
 // Stores the faces on the surface, turned to agree with its parametrization.
@@ -175,47 +162,8 @@ void addSurfaceNode(Mesh& mesh, const ModelSurface& surface, EntityMesh& em, Nod
   em.parametric.insert(em.parametric.end(), {uv.u, uv.v});
 }
 
-double signedVolume(const Mesh& mesh, NodeIndex a, NodeIndex b, NodeIndex c, NodeIndex d) {
-  const Vec3 pa = mesh.node(a);
-  return dot(cross(mesh.node(b) - pa, mesh.node(c) - pa), mesh.node(d) - pa);
-}
-
-// The three tetrahedra of the prism a, b, c (bottom) and d, e, f (top, d above a): every
-// quadrangular face is cut along the diagonal through its smallest node. Tetrahedra that
-// collapse (a vertical edge on a rotation axis) are left out; the others are turned positive.
-void splitPrism(const Mesh& mesh, std::array<NodeIndex, 6> v, std::vector<NodeIndex>& tets) {
-  auto m = std::min_element(v.begin(), v.end()) - v.begin();
-  if (m >= 3) {
-    std::swap_ranges(v.begin(), v.begin() + 3, v.begin() + 3);
-    m -= 3;
-  }
-  std::rotate(v.begin(), v.begin() + m, v.begin() + 3);
-  std::rotate(v.begin() + 3, v.begin() + 3 + m, v.end());
-  const auto [a, b, c, d, e, f] = v;
-  std::array<std::array<NodeIndex, 4>, 3> split;
-  if (std::min(b, f) < std::min(c, e))
-    split = {{{a, b, c, f}, {a, b, f, e}, {a, e, f, d}}};
-  else
-    split = {{{a, b, c, e}, {a, e, c, f}, {a, e, f, d}}};
-  for (auto t : split) {
-    std::array<NodeIndex, 4> sorted = t;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) continue;
-    if (signedVolume(mesh, t[0], t[1], t[2], t[3]) < 0) std::swap(t[1], t[2]);
-    tets.insert(tets.end(), t.begin(), t.end());
-  }
-}
-
-// What every sweep reads.
-struct Sweep {
-  const Model& model;
-  double tolerance;
-  Mesh& mesh;
-};
-
-void meshSweptCurve(const Sweep& s, const ModelCurve& curve) {
+void meshSweptCurve(const Sweep& s, const ModelCurve& curve, const ExtrusionRecord& record) {
   const EntityId id{1, curve.tag};
-  const ExtrusionRecord& record = *curve.extrusion;
   const ModelPoint* source = s.model.point(record.source);
   const bool fromStart = curve.startPoint == record.source;
   if (!source || (!fromStart && curve.endPoint != record.source))
@@ -365,187 +313,9 @@ void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRe
   storeFaces(s.mesh, top, std::move(faces), em);
 }
 
-// Meshes the entities of `tops` whose source is meshed, until none is left; `meshed` tells.
-template <typename Meshed, typename MeshOne>
-void meshImages(const std::map<int, const ExtrusionRecord*>& tops, int dim, Meshed meshed,
-                MeshOne meshOne) {
-  std::map<int, const ExtrusionRecord*> pending = tops;
-  while (!pending.empty()) {
-    bool progress = false;
-    for (auto it = pending.begin(); it != pending.end();) {
-      if (!meshed(it->second->source)) {
-        ++it;
-        continue;
-      }
-      meshOne(it->first, *it->second);
-      it = pending.erase(it);
-      progress = true;
-    }
-    if (!progress)
-      throw MeshError({dim, pending.begin()->first},
-                      "its source " + std::to_string(pending.begin()->second->source) +
-                          " has no mesh to copy");
-  }
-}
-
 bool isMeshed(const Mesh& mesh, EntityId e) {
   const EntityMesh* em = mesh.find(e);
   return em && em->elementCount() > 0;
-}
-
-// The nodes of each source node's sweep, layer by layer: the boundary's nodes where the sweep
-// meets it (found by position), new nodes of the volume elsewhere.
-class Columns {
- public:
-  Columns(const Sweep& s, const ModelVolume& volume, const EntityMesh& source,
-          std::vector<double> fractions)
-      : s_(s),
-        volume_(volume),
-        motion_(*volume.extrusion->motion),
-        inside_(source.nodes.begin(), source.nodes.end()),
-        boundary_(closureLocator(s.model, s.mesh, {3, volume.tag}, s.tolerance)),
-        f_(std::move(fractions)) {}
-
-  const std::vector<NodeIndex>& of(NodeIndex n) {
-    auto [it, added] = columns_.try_emplace(n);
-    if (!added) return it->second;
-    std::vector<NodeIndex>& column = it->second;
-    column.push_back(n);
-    for (std::size_t k = 1; k < f_.size(); ++k) {
-      const Vec3 p = motion_.apply(s_.mesh.node(n), f_[k]);
-      if (const std::optional<NodeIndex> found = boundary_.find(p)) {
-        column.push_back(*found);
-      } else if (inside_.contains(n) && k + 1 < f_.size()) {
-        column.push_back(s_.mesh.addNode(p));
-        s_.mesh.entity({3, volume_.tag}).nodes.push_back(column.back());
-      } else {
-        throw MeshError({3, volume_.tag}, "the sweep of " + nodeText(n) +
-                                              " does not meet the mesh of the volume's boundary");
-      }
-    }
-    return column;
-  }
-
- private:
-  const Sweep& s_;
-  const ModelVolume& volume_;
-  const ExtrusionMotion& motion_;
-  std::set<NodeIndex> inside_;
-  NodeLocator boundary_;
-  std::vector<double> f_;
-  std::map<NodeIndex, std::vector<NodeIndex>> columns_;
-};
-
-void append(EntityMesh& em, ElementType type, std::span<const NodeIndex> nodes) {
-  ElementBlock& block = em.block(type);
-  block.nodes.insert(block.nodes.end(), nodes.begin(), nodes.end());
-}
-
-// The prism a, b, c (bottom), d, e, f (top), positive; where vertical edges collapse on a
-// rotation axis, the pyramid (one edge) or tetrahedron (two) that is left.
-void addPrism(const Mesh& mesh, std::array<NodeIndex, 6> v, EntityMesh& em) {
-  int collapsed = 0, still = 0, moving = 0;
-  for (int i = 0; i < 3; ++i) {
-    if (v[i] == v[i + 3]) ++collapsed, still = i;
-    else moving = i;
-  }
-  if (collapsed == 0) {
-    if (signedVolume(mesh, v[0], v[1], v[2], v[3]) < 0) {
-      std::swap(v[1], v[2]);
-      std::swap(v[4], v[5]);
-    }
-    append(em, ElementType::Prism6, v);
-  } else if (collapsed == 1) {
-    const int b = (still + 1) % 3, c = (still + 2) % 3;
-    std::array<NodeIndex, 5> pyramid{v[b], v[c], v[c + 3], v[b + 3], v[still]};
-    if (signedVolume(mesh, pyramid[0], pyramid[1], pyramid[3], pyramid[4]) < 0)
-      std::swap(pyramid[1], pyramid[3]);
-    append(em, ElementType::Pyramid5, pyramid);
-  } else if (collapsed == 2) {
-    std::array<NodeIndex, 4> tet{v[0], v[1], v[2], v[moving + 3]};
-    if (signedVolume(mesh, tet[0], tet[1], tet[2], tet[3]) < 0) std::swap(tet[1], tet[2]);
-    append(em, ElementType::Tet4, tet);
-  }
-}
-
-// Prisms over the source triangles (Recombine) or three tetrahedra each.
-void sweepTriangles(const Sweep& s, const ElementBlock& triangles, std::size_t layers,
-                    bool recombine, Columns& columns, EntityMesh& em) {
-  for (std::size_t e = 0; e < triangles.size(); ++e) {
-    const auto t = triangles.element(e);
-    const std::vector<NodeIndex>* c[3] = {&columns.of(t[0]), &columns.of(t[1]),
-                                          &columns.of(t[2])};
-    for (std::size_t k = 0; k < layers; ++k) {
-      const std::array<NodeIndex, 6> prism{(*c[0])[k],     (*c[1])[k],     (*c[2])[k],
-                                           (*c[0])[k + 1], (*c[1])[k + 1], (*c[2])[k + 1]};
-      if (recombine)
-        addPrism(s.mesh, prism, em);
-      else
-        splitPrism(s.mesh, prism, em.block(ElementType::Tet4).nodes);
-    }
-  }
-}
-
-// A hexahedron whose side on a rotation axis collapses: the prism that is left. Other
-// collapses (a single corner on the axis) leave no element of the MSH format.
-void addCollapsedHexahedron(const Mesh& mesh, const std::array<NodeIndex, 8>& hex, int collapsed,
-                            int first, EntityMesh& em) {
-  const int a = first == 0 && hex[3] == hex[7] ? 3 : first, b = (a + 1) % 4;
-  if (collapsed != 2 || hex[b] != hex[b + 4])
-    throw MeshError(em.entity, "a hexahedron touches the rotation axis at a corner only; "
-                               "give the source surface triangles there");
-  const int c = (a + 2) % 4, d = (a + 3) % 4;
-  addPrism(mesh, {hex[a], hex[d], hex[d + 4], hex[b], hex[c], hex[c + 4]}, em);
-}
-
-// Hexahedra over the source quadrangles; Recombine is required.
-void sweepQuadrangles(const Sweep& s, const ElementBlock& quads, std::size_t layers,
-                      bool recombine, Columns& columns, EntityMesh& em) {
-  const EntityId id = em.entity;
-  if (!recombine && quads.size() > 0)
-    throw MeshError(id, "its source surface has quadrangles, which only Recombine can sweep "
-                        "(into hexahedra)");
-  for (std::size_t e = 0; e < quads.size(); ++e) {
-    const auto q = quads.element(e);
-    const std::vector<NodeIndex>* c[4] = {&columns.of(q[0]), &columns.of(q[1]),
-                                          &columns.of(q[2]), &columns.of(q[3])};
-    for (std::size_t k = 0; k < layers; ++k) {
-      std::array<NodeIndex, 8> hex;
-      int collapsed = 0, first = -1;
-      for (int v = 0; v < 4; ++v) {
-        hex[v] = (*c[v])[k];
-        hex[v + 4] = (*c[v])[k + 1];
-        if (hex[v] == hex[v + 4]) ++collapsed, first = first < 0 ? v : first;
-      }
-      if (collapsed > 0) {
-        addCollapsedHexahedron(s.mesh, hex, collapsed, first, em);
-        continue;
-      }
-      if (signedVolume(s.mesh, hex[0], hex[1], hex[3], hex[4]) < 0) {
-        std::swap(hex[1], hex[3]);
-        std::swap(hex[5], hex[7]);
-      }
-      ElementBlock& hexes = em.block(ElementType::Hex8);
-      hexes.nodes.insert(hexes.nodes.end(), hex.begin(), hex.end());
-    }
-  }
-}
-
-void meshSweptVolume(const Sweep& s, const ModelVolume& volume) {
-  const EntityId id{3, volume.tag};
-  const ExtrusionRecord& record = *volume.extrusion;
-  const EntityMesh* source = s.mesh.find({2, record.source});
-  if (!source || source->elementCount() == 0)
-    throw MeshError(id, "its source surface " + std::to_string(record.source) + " has no mesh");
-  std::vector<double> f = layerFractions(record.layers, id);
-  const std::size_t layers = f.size() - 1;
-  Columns columns(s, volume, *source, std::move(f));
-  EntityMesh& em = s.mesh.entity(id);
-  const bool recombine = record.layers.recombine;
-  if (const ElementBlock* triangles = source->findBlock(ElementType::Triangle3))
-    sweepTriangles(s, *triangles, layers, recombine, columns, em);
-  if (const ElementBlock* quads = source->findBlock(ElementType::Quad4))
-    sweepQuadrangles(s, *quads, layers, recombine, columns, em);
 }
 
 }  // namespace
@@ -565,21 +335,65 @@ ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
   for (const auto& [tag, surface] : model.surfaces())
-    if (hasLayers(surface.extrusion) && model.curve(surface.extrusion->top))
+    if (hasLayers(surface.extrusion) && model.curve(surface.extrusion->top)) {
       topCurves_[surface.extrusion->top] = &*surface.extrusion;
+      implySideSweeps(surface);
+    }
   for (const auto& [tag, volume] : model.volumes())
     if (hasLayers(volume.extrusion) && model.surface(volume.extrusion->top))
       topSurfaces_[volume.extrusion->top] = &*volume.extrusion;
 }
 
-bool ExtrusionMesher::meshesCurve(int tag) const {
-  const ModelCurve* curve = model_.curve(tag);
-  return topCurves_.contains(tag) || (curve && hasLayers(curve->extrusion));
+const ExtrusionRecord* ExtrusionMesher::sweepRecord(int curveTag) const {
+  const ModelCurve* curve = model_.curve(curveTag);
+  if (curve && hasLayers(curve->extrusion)) return &*curve->extrusion;
+  const auto it = impliedSweeps_.find(curveTag);
+  return it == impliedSweeps_.end() ? nullptr : &it->second;
 }
 
-bool ExtrusionMesher::meshesSurface(int tag) const {
-  const ModelSurface* surface = model_.surface(tag);
-  return topSurfaces_.contains(tag) || (surface && hasLayers(surface->extrusion));
+// A curve bounding a layered sweep of a curve, from an end of the source to an end of the top,
+// is the sweep of that end with the same layers, whether or not the kernel says so (the
+// OpenCASCADE factory records the sweeps of an extruded surface's curves, not of its corners).
+void ExtrusionMesher::implySideSweeps(const ModelSurface& surface) {
+  const ExtrusionRecord& record = *surface.extrusion;
+  const ModelCurve* source = model_.curve(record.source);
+  const ModelCurve* top = model_.curve(record.top);
+  if (!source || !top) return;
+  auto isEnd = [](const ModelCurve& c, int point) {
+    return point == c.startPoint || point == c.endPoint;
+  };
+  for (int signedTag : model_.boundary({2, surface.tag})) {
+    const ModelCurve* side = model_.curve(std::abs(signedTag));
+    if (!side || side == source || side == top || side->extrusion ||
+        side->startPoint == side->endPoint)
+      continue;
+    for (const auto& [from, to] : {std::pair{side->startPoint, side->endPoint},
+                                  std::pair{side->endPoint, side->startPoint}}) {
+      const ModelPoint* a = model_.point(from);
+      const ModelPoint* b = model_.point(to);
+      if (!a || !b || !isEnd(*source, from) || !isEnd(*top, to) ||
+          distance(record.motion->apply(a->xyz, 1), b->xyz) > tolerance_)
+        continue;
+      impliedSweeps_.try_emplace(side->tag, ExtrusionRecord{from, record.layers, to, record.motion});
+      break;
+    }
+  }
+}
+
+bool ExtrusionMesher::sweeps(EntityId id) const {
+  if (id.dim == 1) return sweepRecord(id.tag) != nullptr;
+  if (id.dim == 2) {
+    const ModelSurface* surface = model_.surface(id.tag);
+    return surface && hasLayers(surface->extrusion);
+  }
+  return id.dim == 3 && meshesVolume(id.tag);
+}
+
+const ExtrusionRecord* ExtrusionMesher::imageRecord(EntityId id) const {
+  if (id.dim != 1 && id.dim != 2) return nullptr;
+  const std::map<int, const ExtrusionRecord*>& tops = id.dim == 1 ? topCurves_ : topSurfaces_;
+  const auto it = tops.find(id.tag);
+  return it == tops.end() ? nullptr : it->second;
 }
 
 bool ExtrusionMesher::meshesVolume(int tag) const {
@@ -587,34 +401,30 @@ bool ExtrusionMesher::meshesVolume(int tag) const {
   return volume && hasLayers(volume->extrusion);
 }
 
-void ExtrusionMesher::meshCurves(Mesh& mesh) const {
+void ExtrusionMesher::meshSwept(EntityId id, Mesh& mesh) const {
   const Sweep s{model_, tolerance_, mesh};
-  for (const auto& [tag, curve] : model_.curves())
-    if (hasLayers(curve.extrusion) && !topCurves_.contains(tag))
-      meshSweptCurve(s, curve);
-  meshImages(
-      topCurves_, 1, [&](int source) { return isMeshed(mesh, {1, source}); },
-      [&](int tag, const ExtrusionRecord& record) {
-        meshImageCurve(s, *model_.curve(tag), record);
-      });
+  if (id.dim == 1)
+    meshSweptCurve(s, *model_.curve(id.tag), *sweepRecord(id.tag));
+  else
+    meshSweptSurface(s, *model_.surface(id.tag));
 }
 
-void ExtrusionMesher::meshSurfaces(Mesh& mesh) const {
+void ExtrusionMesher::meshImage(EntityId id, Mesh& mesh) const {
+  const ExtrusionRecord* record = imageRecord(id);
+  if (!record) throw MeshError(id, "it is the top of no extrusion with layers");
+  if (!isMeshed(mesh, {id.dim, record->source}))
+    throw MeshError(id, "its source " + std::to_string(record->source) + " has no mesh to copy");
   const Sweep s{model_, tolerance_, mesh};
-  for (const auto& [tag, surface] : model_.surfaces())
-    if (hasLayers(surface.extrusion) && !topSurfaces_.contains(tag))
-      meshSweptSurface(s, surface);
-  meshImages(
-      topSurfaces_, 2, [&](int source) { return isMeshed(mesh, {2, source}); },
-      [&](int tag, const ExtrusionRecord& record) {
-        meshImageSurface(s, *model_.surface(tag), record);
-      });
+  if (id.dim == 1)
+    meshImageCurve(s, *model_.curve(id.tag), *record);
+  else
+    meshImageSurface(s, *model_.surface(id.tag), *record);
 }
 
 void ExtrusionMesher::meshVolumes(Mesh& mesh) const {
   const Sweep s{model_, tolerance_, mesh};
   for (const auto& [tag, volume] : model_.volumes())
-    if (hasLayers(volume.extrusion)) meshSweptVolume(s, volume);
+    if (hasLayers(volume.extrusion)) extrusion::meshSweptVolume(s, volume);
 }
 
 }  // namespace geomesh

@@ -14,7 +14,9 @@ namespace geomesh {
 // curve's nodes swept layer by layer (quadrangles, or each cut into two triangles); a volume
 // swept by a surface gets prisms and hexahedra (Recombine) or tetrahedra, three per prism.
 // The top of such a sweep is meshed as the image of its source. Node k of a sweep is the
-// motion at the layer fraction k applied to the source node.
+// motion at the layer fraction k applied to the source node. A side curve of a layered sweep of a
+// curve, joining an end of the source to the matching end of the top, is swept with the same
+// layers even when the kernel does not record it.
 //
 // Quadrangles are cut, in surfaces and in prisms' faces alike, along the diagonal through
 // their corner of smallest node index (Dompierre, Labbé, Vallet, Camarero, IMR 1999), so that
@@ -23,20 +25,29 @@ class ExtrusionMesher {
  public:
   explicit ExtrusionMesher(const Model& model);
 
-  // Whether the entity's mesh comes from an extrusion with layers (a sweep or its top).
-  bool meshesCurve(int tag) const;
-  bool meshesSurface(int tag) const;
-  bool meshesVolume(int tag) const;
+  // Whether the curve, surface or volume is itself extruded with layers (a sweep).
+  bool sweeps(EntityId id) const;
+  // The record of the extrusion with layers whose top the curve or surface is, or null.
+  const ExtrusionRecord* imageRecord(EntityId id) const;
 
-  // Run after the other entities of the dimension are meshed; each new node gets the target
+  // Meshes a swept curve or surface, whose boundary is meshed; each new node gets the target
   // size of the source node it comes from (Mesh::setNodeSize).
-  void meshCurves(Mesh& mesh) const;
-  void meshSurfaces(Mesh& mesh) const;
+  void meshSwept(EntityId id, Mesh& mesh) const;
+  // Meshes the top of an extrusion as the image of its source, which must be meshed: throws
+  // MeshError naming the top when it is not.
+  void meshImage(EntityId id, Mesh& mesh) const;
+
+  bool meshesVolume(int tag) const;
+  // Run after the surfaces are meshed.
   void meshVolumes(Mesh& mesh) const;
 
  private:
+  const ExtrusionRecord* sweepRecord(int curveTag) const;
+  void implySideSweeps(const ModelSurface& surface);
+
   const Model& model_;
   double tolerance_ = 0;
+  std::map<int, ExtrusionRecord> impliedSweeps_;       // side curve -> its sweep from a point
   std::map<int, const ExtrusionRecord*> topCurves_;    // top curve -> the surface's record
   std::map<int, const ExtrusionRecord*> topSurfaces_;  // top surface -> the volume's record
 };

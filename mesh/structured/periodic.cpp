@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -36,23 +35,6 @@ Vec3 applyLinear(const std::vector<double>& a, Vec3 v) {
 
 std::string curveName(int tag) { return "curve " + std::to_string(tag); }
 std::string surfaceName(int tag) { return "surface " + std::to_string(tag); }
-
-// Visits the slaves of `links` so that a master that is itself a slave comes before its own
-// slaves; throws MeshError on a cycle.
-template <class Visit>
-void inDependencyOrder(int dim, const std::map<int, int>& masterOf, Visit visit) {
-  std::set<int> done, active;
-  std::function<void(int)> walk = [&](int tag) {
-    if (done.contains(tag)) return;
-    if (!active.insert(tag).second) throw MeshError({dim, tag}, "its periodicity is circular");
-    if (const auto it = masterOf.find(tag); it != masterOf.end() && masterOf.contains(it->second))
-      walk(it->second);
-    visit(tag);
-    active.erase(tag);
-    done.insert(tag);
-  };
-  for (const auto& entry : masterOf) walk(entry.first);
-}
 
 // The parameter of the point of a curve closest to p, by Newton's method from `guess`.
 double projectOnCurve(const CurveGeometry& g, Vec3 p, double guess) {
@@ -340,27 +322,21 @@ std::map<int, Periodicity> periodicCurves(const Model& model) {
   return links;
 }
 
-void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links,
-                        Mesh& mesh) {
-  std::map<int, int> masterOf;
-  for (const auto& entry : links) masterOf[entry.first] = entry.second.master;
-  const double scale = modelScale(model);
-  inDependencyOrder(1, masterOf, [&](int tag) {
-    copyCurve(model, *model.curve(tag), links.at(tag), scale, mesh);
-  });
-  linkEndPoints(model, links, mesh);
+PeriodicCopier::PeriodicCopier(const Model& model) : model_(model), scale_(modelScale(model)) {}
+
+void PeriodicCopier::copyCurve(int tag, const Periodicity& link, Mesh& mesh) const {
+  const EntityMesh* master = mesh.find({1, link.master});
+  if (!master || master->elementCount() == 0)
+    throw MeshError({1, tag}, "its periodic master " + curveName(link.master) + " has no mesh");
+  geomesh::copyCurve(model_, *model_.curve(tag), link, scale_, mesh);
 }
 
-bool isPeriodicSurface(const ModelSurface& surface) { return surface.periodic.has_value(); }
+void PeriodicCopier::linkEndPoints(const std::map<int, Periodicity>& links, Mesh& mesh) const {
+  geomesh::linkEndPoints(model_, links, mesh);
+}
 
-void copyPeriodicSurfaces(const Model& model, Mesh& mesh) {
-  std::map<int, int> masterOf;
-  for (const auto& [tag, surface] : model.surfaces())
-    if (surface.periodic) masterOf[tag] = surface.periodic->master;
-  const double scale = modelScale(model);
-  inDependencyOrder(2, masterOf, [&](int tag) {
-    copySurface(model, *model.surface(tag), scale, mesh);
-  });
+void PeriodicCopier::copySurface(int tag, Mesh& mesh) const {
+  geomesh::copySurface(model_, *model_.surface(tag), scale_, mesh);
 }
 
 }  // namespace geomesh

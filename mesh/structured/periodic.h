@@ -22,22 +22,30 @@ Vec3 applyAffine(const std::vector<double>& affine, Vec3 p);
 // naming the slave surface when a curve has no image among the slave's boundary curves.
 std::map<int, Periodicity> periodicCurves(const Model& model);
 
-// Meshes each curve of `links` as the image of its master's mesh (a master that is itself
-// periodic first), then links the end points of those curves to their masters' (the first
-// curve, by tag, decides for a point shared by several). Each new node is put on the slave's
-// geometry, with its parameter and its master node's target size. Throws MeshError naming the
-// curve when its end points are not the images of its master's, or when its geometry is not
-// the image of the master's.
-void copyPeriodicCurves(const Model& model, const std::map<int, Periodicity>& links,
-                        Mesh& mesh);
+// Meshes periodic slaves as images of their masters' meshes, one entity at a time: the caller
+// meshes each master first (meshingOrder).
+class PeriodicCopier {
+ public:
+  explicit PeriodicCopier(const Model& model);
 
-// Whether the surface is meshed as the image of another (by copyPeriodicSurfaces).
-bool isPeriodicSurface(const ModelSurface& surface);
+  // Meshes the curve as the image of its master's mesh, each new node put on the slave's
+  // geometry with its parameter and its master node's target size. Throws MeshError naming the
+  // curve when its master has no mesh, when its end points are not the images of its master's,
+  // or when its geometry is not the image of the master's.
+  void copyCurve(int tag, const Periodicity& link, Mesh& mesh) const;
+  // Links the end points of the curves of `links` to their masters' (the first curve, by tag,
+  // decides for a point shared by several); run once every curve is meshed.
+  void linkEndPoints(const std::map<int, Periodicity>& links, Mesh& mesh) const;
+  // Meshes the periodic surface as the image of its master's mesh: the images of the master's
+  // boundary nodes are the slave's curve nodes, the others are new nodes put on the slave's
+  // geometry; elements are oriented along the slave's normal. Throws MeshError naming the
+  // surface when its master has no mesh or its boundary nodes are not the images of the
+  // master's.
+  void copySurface(int tag, Mesh& mesh) const;
 
-// Meshes every periodic surface as the image of its master's mesh (masters first): the images
-// of the master's boundary nodes are the slave's curve nodes, the others are new nodes put on
-// the slave's geometry; elements are oriented along the slave's normal. Throws MeshError naming
-// the surface when its boundary nodes are not the images of the master's.
-void copyPeriodicSurfaces(const Model& model, Mesh& mesh);
+ private:
+  const Model& model_;
+  double scale_;
+};
 
 }  // namespace geomesh

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "mesh/surfaces/constrained_delaunay.h"
+#include "mesh/surfaces/landing_grid.h"
 #include "mesh/curves/curve_mesher.h"
 #include "mesh/core/mesh_error.h"
 #include "mesh/surfaces/surface_metric.h"
@@ -177,6 +178,76 @@ void addLoop(SurfaceInput& in, const std::vector<LoopPiece>& loop) {
   }
 }
 
+// Under this distance two nodes are at one place: a billionth of the boundary's extent, far
+// below any element, far above rounding.
+double coincidence(const BoundingBox& box) {
+  return box.empty() ? 0 : 1e-9 * distance(box.min, box.max);
+}
+
+// An end of an embedded curve on another curve is only meshable when it is a point of that
+// curve too (the curve must be split there): otherwise the two meshes would cross or overlap.
+void requireSharedEnds(const SurfaceInput& in, const LandingGrid& grid, const ModelCurve& curve,
+                       const LoopPiece& piece, EntityId id) {
+  for (const auto& [point, node] : {std::pair{curve.startPoint, piece.chain.front()},
+                                    std::pair{curve.endPoint, piece.chain.back()}}) {
+    if (in.pointsOf.contains(node)) continue;  // a point the surface has already
+    const LandingGrid::Landing landing = grid.find(node);
+    if (landing.curve == 0 && !landing.node) continue;
+    throw MeshError(id, "point " + std::to_string(point) + ", an end of embedded curve " +
+                            std::to_string(curve.tag) + ", lies on " +
+                            (landing.curve ? "curve " + std::to_string(landing.curve)
+                                           : std::string("another embedded point")) +
+                            " without being one of its points: split that curve at point " +
+                            std::to_string(point));
+  }
+}
+
+// Embedded curves, each checked against what was collected before it.
+void addEmbeddedCurves(SurfaceInput& in, LandingGrid& grid, const Model& model,
+                       const Mesh& mesh, const ModelSurface& surface) {
+  for (int curve : surface.embeddedCurves) {
+    const LoopPiece piece = loopPiece(model, mesh, *surface.geometry, curve);
+    if (const ModelCurve* c = model.curve(curve))
+      requireSharedEnds(in, grid, *c, piece, {2, surface.tag});
+    in.addChain(piece.chain, piece.at, curve, EdgeKind::Embedded);
+    for (std::size_t k = 0; k + 1 < piece.chain.size(); ++k)
+      grid.addSegment(piece.chain[k], piece.chain[k + 1], curve);
+  }
+}
+
+// Embedded points: one at the place of a node the surface has already (a boundary node, or a
+// point embedded twice) is that node; one on a segment of a curve is rejected.
+void addEmbeddedPoints(SurfaceInput& in, LandingGrid& grid, const Mesh& mesh,
+                       const ModelSurface& surface) {
+  for (int point : surface.embeddedPoints) {
+    const NodeIndex node = pointNode(mesh, point);
+    if (!in.pointsOf.contains(node)) {
+      const LandingGrid::Landing landing = grid.find(node);
+      if (landing.node) continue;
+      if (landing.curve != 0)
+        throw MeshError({2, surface.tag},
+                        "embedded point " + std::to_string(point) + " lies on curve " +
+                            std::to_string(landing.curve) + " between two of its nodes");
+      grid.addPoint(node);
+    }
+    in.local(node);
+  }
+}
+
+// The embedded curves and points, checked against the boundary and each other.
+void addEmbedded(SurfaceInput& in, const Model& model, const Mesh& mesh,
+                 const ModelSurface& surface, double segmentLength) {
+  if (surface.embeddedCurves.empty() && surface.embeddedPoints.empty()) return;
+  BoundingBox box;
+  for (NodeIndex n : in.nodes) box.include(mesh.node(n));
+  const double extent = box.empty() ? 0 : distance(box.min, box.max);
+  LandingGrid grid(mesh, coincidence(box), std::max(segmentLength, extent / 256));
+  for (std::size_t k = 0; k < in.segments.size(); ++k)
+    grid.addSegment(in.nodes[in.segments[k].a], in.nodes[in.segments[k].b], in.segmentCurve[k]);
+  addEmbeddedCurves(in, grid, model, mesh, surface);
+  addEmbeddedPoints(in, grid, mesh, surface);
+}
+
 SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const Mesh& mesh) {
   const SurfaceGeometry& g = *surface.geometry;
   SurfaceInput in;
@@ -193,11 +264,7 @@ SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const
     for (LoopPiece& piece : loop)
       if (piece.pole) expandPole(in, g, piece, size);
   for (const std::vector<LoopPiece>& loop : loops) addLoop(in, loop);
-  for (int curve : surface.embeddedCurves) {
-    const LoopPiece piece = loopPiece(model, mesh, g, curve);
-    in.addChain(piece.chain, piece.at, curve, EdgeKind::Embedded);
-  }
-  for (int point : surface.embeddedPoints) in.local(pointNode(mesh, point));
+  addEmbedded(in, model, mesh, surface, size);
   return in;
 }
 

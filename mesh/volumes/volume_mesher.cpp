@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "mesh/structured/extrusion_mesher.h"
 #include "mesh/core/mesh_error.h"
 #include "mesh/core/predicates.h"
+#include "mesh/volumes/abort_trap.h"
 #include "mesh/volumes/tet_optimizer.h"
 
 namespace geomesh {
@@ -419,7 +421,10 @@ std::string tetgenFailure(int code) {
   }
 }
 
-void tetrahedralizeBoundary(const ModelVolume& volume, TetgenInput& input, tetgenio& output,
+// Whether TetGen ran to its end; false when it aborted on a failed assertion, which TetGen 1.5
+// does on some exactly degenerate inputs (many cospherical and coplanar nodes, as a prism whose
+// top is the translated copy of its bottom), depending on the order of the points.
+bool tetrahedralizeBoundary(const ModelVolume& volume, TetgenInput& input, tetgenio& output,
                             tetgenio* background) {
   // p: boundary given as facets; Y: no node added on it; q2.0: radius-edge ratio bound (a
   // tighter one or a dihedral angle bound adds 5-20% tetrahedra, and the slivers left near the
@@ -427,10 +432,35 @@ void tetrahedralizeBoundary(const ModelVolume& volume, TetgenInput& input, tetge
   // numbering; Q: quiet.
   char switches[] = "pYq2.0mzQ";
   try {
-    tetrahedralize(switches, &input.io(), &output, nullptr, background);
+    return runTrappingAbort(
+        [&] { tetrahedralize(switches, &input.io(), &output, nullptr, background); });
   } catch (int code) {
     throw MeshError({3, volume.tag}, tetgenFailure(code));
   }
+}
+
+// Renumbers the boundary's nodes by i -> i * stride mod n, with the stride the first integer
+// from `start` coprime with n, so that TetGen meets the points in another order.
+void renumber(BoundaryMesh& b, std::vector<Vec3>& xyz, std::vector<double>& sizes,
+              std::size_t start) {
+  const std::size_t n = b.nodes.size();
+  std::size_t stride = std::max<std::size_t>(start, 1);
+  while (std::gcd(stride, n) != 1) ++stride;
+  std::vector<int> to(n);
+  for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<int>(i * stride % n);
+  std::vector<NodeIndex> nodes(n);
+  std::vector<Vec3> places(n);
+  std::vector<double> targets(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    nodes[to[i]] = b.nodes[i];
+    places[to[i]] = xyz[i];
+    targets[to[i]] = sizes[i];
+  }
+  b.nodes = std::move(nodes);
+  xyz = std::move(places);
+  sizes = std::move(targets);
+  for (Triangle& t : b.triangles)
+    for (int& k : t) k = to[k];
 }
 
 // A background mesh for TetGen: the nodes and tetrahedra of a mesh it made, borrowed, with a
@@ -488,7 +518,8 @@ std::unique_ptr<tetgenio> followInteriorSize(const ModelVolume& volume, TetgenIn
     }
     TetgenBackground background(*mesh, std::move(sizes));
     auto next = std::make_unique<tetgenio>();
-    tetrahedralizeBoundary(volume, input, *next, &background.io());
+    // A pass that aborts (see tetrahedralizeBoundary) leaves the previous mesh.
+    if (!tetrahedralizeBoundary(volume, input, *next, &background.io())) break;
     const int after = next->numberofpoints;
     mesh = std::move(next);
     if (std::abs(after - before) <= kSettled * before) break;
@@ -544,13 +575,25 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
     orientShell(boundary.triangles, boundary.shellStart[s], last, xyz);
     holes.push_back(pointInsideShell(boundary.triangles, boundary.shellStart[s], last, xyz));
   }
-  const std::vector<double> boundarySizes = boundaryNodeSizes(boundary, xyz, options);
-  TetgenInput input(boundary, xyz, boundarySizes, holes);
-  auto output = std::make_unique<tetgenio>();
-  tetrahedralizeBoundary(*volume, input, *output, nullptr);
-  if (interiorSize) output = followInteriorSize(*volume, input, boundarySizes, interiorSize,
-                                                options, std::move(output));
-  appendTetrahedra(*volume, boundary, *output, mesh);
+  std::vector<double> boundarySizes = boundaryNodeSizes(boundary, xyz, options);
+  constexpr int kOrders = 3;
+  for (int attempt = 0;; ++attempt) {
+    if (attempt > 0)
+      renumber(boundary, xyz, boundarySizes, boundary.nodes.size() / (attempt + 1) + 1);
+    TetgenInput input(boundary, xyz, boundarySizes, holes);
+    auto output = std::make_unique<tetgenio>();
+    if (tetrahedralizeBoundary(*volume, input, *output, nullptr)) {
+      if (interiorSize)
+        output = followInteriorSize(*volume, input, boundarySizes, interiorSize, options,
+                                    std::move(output));
+      appendTetrahedra(*volume, boundary, *output, mesh);
+      break;
+    }
+    if (attempt + 1 == kOrders)
+      throw MeshError({3, volumeTag}, "TetGen failed an internal check on its boundary mesh in " +
+                                          std::to_string(kOrders) +
+                                          " orders of its nodes (a degenerate configuration)");
+  }
   if (options.optimize) optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold);
 }
 

@@ -187,6 +187,45 @@ TEST(SurfaceMesher, EmbeddedPointAndCurveBecomeMeshNodesAndEdges) {
   EXPECT_NEAR(testing::meshArea(mesh, 1), 1.0, 1e-12);
 }
 
+TEST(SurfaceMesher, ManyEmbeddedPointsSomeOnTheBoundaryOrTwice) {
+  PolygonModelBuilder b;
+  const std::vector<int> outer = b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.05);
+  ModelSurface& s = b.surface({outer});
+  for (int i = 1; i < 40; ++i)
+    for (int j = 1; j < 40; ++j) s.embeddedPoints.push_back(b.point(i / 40.0, j / 40.0, 0.05));
+  s.embeddedPoints.push_back(b.point(0.5, 0.5, 0.05));  // twice at one place
+  s.embeddedPoints.push_back(b.point(0.5, 0, 0.05));    // at a node of the bottom side
+  s.embeddedPoints.push_back(b.point(0, 0.25, 0.05));   // at a node of the left side
+  const Mesh mesh = meshModel(b.model);
+  // The points' own nodes stay where the script put them, on the boundary's nodes and on each
+  // other (as in the reference); the surface itself is sound.
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  for (const MeshProblem& problem : report.problems) {
+    EXPECT_NE(problem.entity.dim, 2) << problem.message;
+    EXPECT_NE(problem.message.find("coincide"), std::string::npos) << problem.message;
+  }
+  const EntityMesh* em = mesh.find({2, 1});
+  EXPECT_EQ(em->nodes.size(), 0u);  // every interior node is an embedded point
+  // Euler: 2 per interior node (39 x 39 embedded points) + 1 per boundary node (80) - 2.
+  EXPECT_EQ(em->findBlock(ElementType::Triangle3)->size(), 2u * 39 * 39 + 80 - 2);
+  EXPECT_NEAR(testing::meshArea(mesh, 1), 1.0, 1e-12);
+}
+
+TEST(SurfaceMesher, EmbeddedPointBetweenTwoBoundaryNodesIsALocatedError) {
+  PolygonModelBuilder b;
+  const std::vector<int> outer = b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1);
+  const int between = b.point(0.55, 0, 0.1);
+  b.surface({outer}).embeddedPoints.push_back(between);
+  try {
+    meshModel(b.model);
+    FAIL() << "no error";
+  } catch (const MeshError& e) {
+    EXPECT_EQ(e.entity.dim, 2);
+    EXPECT_NE(std::string(e.what()).find("embedded point 5 lies on curve 1"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(SurfaceMesher, SmoothingKeepsTheMeshValid) {
   PolygonModelBuilder b;
   b.surface({b.polygon({{0, 0}, {2, 0}, {2, 0.3}, {0.3, 0.3}, {0.3, 1}, {0, 1}}, 0.03)});
