@@ -39,7 +39,7 @@ using geomesh::grammar::unary;
 %token <std::string> TAILWORD "modifier" ATTR "attribute"
 %token FOR "For" ENDFOR "EndFor" IN "In" IF "If" ELSEIF "ElseIf" ELSE "Else" ENDIF "EndIf"
 %token MACRO "Macro" RETURN "Return" CALL "Call" PLUGIN "Plugin" USINGWIRE "Using Wire"
-%token STRUCT "Struct" SCOPE "::"
+%token STRUCT "Struct" SCOPE "::" DOTS "..." SPLIT "Split"
 %token DEFINECONSTANT "DefineConstant" DEFINENUMBER "DefineNumber" DEFINESTRING "DefineString"
 %token EQ "==" NE "!=" LE "<=" GE ">=" AND "&&" OR "||" INCR "++" DECR "--"
 %token PLUSEQ "+=" MINUSEQ "-=" TIMESEQ "*=" DIVEQ "/=" APPEND ">>"
@@ -252,6 +252,10 @@ command:
     auto wire = makeExpr(ExprKind::Shape, @2); wire->words = {"Wire"};
     wire->parts.push_back(std::move($3));
     std::get<CommandStmt>($$->node).tail.push_back(TailItem{"Using", std::move(wire)}); }
+| SPLIT shape shape ';' {  // Split Curve{1} Point{2};
+    $2->words.insert($2->words.begin(), "Split");
+    $$ = grammar::shapeCommand(std::move($2), @1);
+    std::get<CommandStmt>($$->node).tail.push_back(TailItem{"", std::move($3)}); }
 | shape tail ';' {
     $$ = grammar::shapeCommand(std::move($1), @1);
     std::get<CommandStmt>($$->node).tail = std::move($2); }
@@ -400,6 +404,9 @@ item:
 | expr ':' expr ':' expr {
     $$ = makeExpr(ExprKind::Range, @1); $$->args.push_back(std::move($1));
     $$->args.push_back(std::move($3)); $$->args.push_back(std::move($5)); }
+| expr DOTS expr {  // the old spelling of a range: {1 ... 3} is {1:3}
+    $$ = makeExpr(ExprKind::Range, @1);
+    $$->args.push_back(std::move($1)); $$->args.push_back(std::move($3)); }
 | ':' { $$ = makeExpr(ExprKind::All, @1); }
 ;
 
@@ -464,6 +471,9 @@ primary:
 | member_ref '[' expr ']' {
     $$ = std::move($1); $$->kind = ExprKind::MemberItem; $$->args.push_back(std::move($3)); }
 | shape { $$ = std::move($1); }
+| words STRING {  // Surface "*": every surface, as Surface{:}
+    $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1); $$->text = std::move($2);
+    $$->parts.emplace_back(); $$->parts.back().items.push_back(makeExpr(ExprKind::All, @2)); }
 | words '(' args_opt ')' {
     $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);
     $$->parts.emplace_back(); $$->parts.back().items = std::move($3); }

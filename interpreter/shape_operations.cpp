@@ -294,6 +294,11 @@ Value Interpreter::physicalQuery(const ast::Expr& expr, int dim) {
 
 Value Interpreter::shapeValue(const ast::Expr& expr) {
   const Words& w = expr.words;
+  // Surface "*" is Surface{:}; a physical group takes no other string (a group of that name is
+  // selected by Physical Surface{tag} only).
+  if (!expr.text.empty() && !w.empty() && w[0] == "Physical" && expr.text != "*")
+    fail(expr.loc, "'" + w[0] + " " + w.back() + " \"" + expr.text +
+                       "\"': only \"*\" (every group) may follow; use {tags} to select groups");
   // Point{n} is the point's coordinates, but Point{:} the tags of all points, as in Gmsh.
   const bool allPoints = expr.parts.size() == 1 && expr.parts[0].items.size() == 1 &&
                          expr.parts[0].items[0]->kind == ast::ExprKind::All;
