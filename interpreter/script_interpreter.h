@@ -156,6 +156,7 @@ class Interpreter {
   static int tagKind(const std::vector<std::string>& words);
   static bool isCurveThroughPoints(const std::string& word);
   std::optional<Vec3> circlePlaneNormal(const ast::CommandStmt& command);
+  void executePeriodicByTranslation(const ast::CommandStmt& command, const SourceLocation& where);
   void definePolarSphere(const ast::CommandStmt& command, const SourceLocation& where);
   void executeSplitCurve(const ast::CommandStmt& command, const SourceLocation& where);
   void warnIfNearlyPlane(int tag, const SourceLocation& where);

@@ -210,12 +210,45 @@ void Interpreter::executePeriodic(const ast::CommandStmt& command, const SourceL
   const bool transformed = command.shape && command.value && command.tail.size() == 1 &&
                            command.tail[0].word.empty() && command.tail[0].value &&
                            isTransform(command.tail[0].value->words.at(0));
-  if (!transformed) return unsupportedStatement(command, where);
   const int dim = entityDimension({command.words[1]});
+  const bool bare = command.shape && command.value && command.tail.empty() && dim == 1;
+  if (bare) return executePeriodicByTranslation(command, where);
+  if (!transformed) return unsupportedStatement(command, where);
   try {
     session_.factory().setPeriodic(dim, shapeTags(*command.shape, dim),
                                    entityTags(*command.value),
                                    transformMap(*command.tail[0].value));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Periodic Curve{slaves} = {masters}; (the older form, without a transform): the slaves must be
+// the masters moved by one translation, which the curves' ends give.
+void Interpreter::executePeriodicByTranslation(const ast::CommandStmt& command,
+                                               const SourceLocation& where) {
+  GeometryFactory& geo = session_.factory();
+  const std::vector<int> slaves = shapeTags(*command.shape, 1);
+  const std::vector<int> masters = entityTags(*command.value);
+  try {
+    if (slaves.size() != masters.size() || slaves.empty())
+      throw GeometryError("Periodic: " + std::to_string(slaves.size()) +
+                          " curves cannot match " + std::to_string(masters.size()));
+    std::optional<Vec3> shift;
+    for (std::size_t i = 0; i < slaves.size(); ++i) {
+      const auto s = geo.boundary({{1, slaves[i]}}, false);
+      const auto m = geo.boundary({{1, masters[i]}}, false);
+      for (std::size_t end = 0; end < 2 && end < s.size() && end < m.size(); ++end) {
+        const Vec3 d = geo.pointCoordinates(s[end].tag) - geo.pointCoordinates(m[end].tag);
+        if (!shift) shift = d;
+        if (distance(*shift, d) > 1e-6 * (1 + norm(d)))
+          fail(where, "Periodic Curve: curve " + std::to_string(slaves[i]) +
+                          " is not a translate of curve " + std::to_string(masters[i]) +
+                          "; give the transform: Periodic Curve{..} = {..} Rotate{..} or "
+                          "Translate{..}");
+      }
+    }
+    geo.setPeriodic(1, slaves, masters, AffineMap::translation(shift.value_or(Vec3{})));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
