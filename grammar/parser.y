@@ -187,8 +187,21 @@ words:
 command:
   words ';' { CommandStmt c; c.words = std::move($1); $$ = makeStmt(std::move(c), @1); }
 | words bare ';' {
-    CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
-    c.args.push_back(std::move($2)); $$ = makeStmt(std::move(c), @1); }
+    if (grammar::selectsEverything($1, *$2)) {  // Recombine Surface "*";
+      $$ = grammar::shapeCommand(grammar::everything(std::move($1), @1), @1);
+    } else {
+      CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
+      c.args.push_back(std::move($2)); $$ = makeStmt(std::move(c), @1);
+    } }
+| words STRING '=' expr ';' {  // Transfinite Curve "*" = 10;
+    if ($2 != "*") throw SyntaxError(at(@2), "only \"*\" (every entity) may stand here");
+    $$ = grammar::shapeCommand(grammar::everything(std::move($1), @1), @1);
+    auto& c = std::get<CommandStmt>($$->node); c.op = "="; c.value = std::move($4); }
+| words STRING '=' expr tail ';' {
+    if ($2 != "*") throw SyntaxError(at(@2), "only \"*\" (every entity) may stand here");
+    $$ = grammar::shapeCommand(grammar::everything(std::move($1), @1), @1);
+    auto& c = std::get<CommandStmt>($$->node); c.op = "="; c.value = std::move($4);
+    c.tail = std::move($5); }
 | words '(' args_opt ')' ';' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
     c.args = std::move($3); $$ = makeStmt(std::move(c), @1); }

@@ -332,6 +332,7 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
   if (!expr.text.empty() && !w.empty() && w[0] == "Physical" && expr.text != "*")
     fail(expr.loc, "'" + w[0] + " " + w.back() + " \"" + expr.text +
                        "\"': only \"*\" (every group) may follow; use {tags} to select groups");
+  rejectOlderForms(w, false, expr.loc);
   // Point{n} is the point's coordinates, but Point{:} the tags of all points, as in Gmsh.
   const bool allPoints = expr.parts.size() == 1 && expr.parts[0].items.size() == 1 &&
                          expr.parts[0].items[0]->kind == ast::ExprKind::All;

@@ -187,6 +187,7 @@ const Interpreter::StatementRow* Interpreter::findStatement(const std::vector<st
 }
 
 void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLocation& where) {
+  rejectOlderForms(command.words, command.shape != nullptr, where);
   if (const StatementRow* row = findStatement(command.words))
     return (this->*row->handler)(command, where);
   unsupportedStatement(command, where);
@@ -200,6 +201,21 @@ std::vector<std::string_view> Interpreter::statementPatterns() {
 
 std::span<const std::string_view> Interpreter::keywordsStartingNoStatement() {
   return kNoStatement;
+}
+
+// Forms of Gmsh 1 and 2 that Gmsh 4 rejects: each is an error naming the form to write.
+void Interpreter::rejectOlderForms(const std::vector<std::string>& words, bool braces,
+                                   const SourceLocation& where) {
+  if (words.size() != 2) return;
+  const std::string& kind = words[1];
+  const bool entity = kind == "Point" || kind == "Line" || kind == "Curve" || kind == "Surface" ||
+                      kind == "Volume";
+  if (words[0] == "Extrude" && entity)
+    fail(where, "'Extrude " + kind + " {tag, {dx, dy, dz}}' is an older form that is no longer "
+                "read; write Extrude {dx, dy, dz} { " + kind + "{tag}; }");
+  if (words[0] == "Physical" && entity && braces)
+    fail(where, "a physical group is defined as Physical " + kind + "(tag) = {..}; or Physical " +
+                    kind + "(\"name\") = {..};, not with braces");
 }
 
 void Interpreter::unsupportedStatement(const ast::CommandStmt& command,

@@ -123,5 +123,32 @@ TEST(OlderForms, PeriodicCurveWithoutTransform) {
             std::string::npos);
 }
 
+TEST(OlderForms, StarSelectsEveryEntityInCommands) {
+  ScriptRun run;
+  run.run("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
+          "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+          "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+          "Transfinite Line \"*\" = 5 Using Progression 1.1; Transfinite Surface \"*\";\n"
+          "Recombine Surface \"*\";\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  const auto& constraints = run.session.model().meshConstraints();
+  EXPECT_EQ(constraints.transfiniteCurves.size(), 4u);
+  EXPECT_EQ(constraints.transfiniteCurves.at(3).coefficient, 1.1);
+  EXPECT_EQ(firstLineOf("Transfinite Line \"a\" = 5;"),
+            "test.geo:1:18: error: only \"*\" (every entity) may stand here");
+}
+
+TEST(OlderForms, FormsNoLongerReadAreLocatedErrors) {
+  EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nExtrude Point {1, {0, 0, 1}};"),
+            "test.geo:2:1: error: 'Extrude Point {tag, {dx, dy, dz}}' is an older form that is "
+            "no longer read; write Extrude {dx, dy, dz} { Point{tag}; }");
+  EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nx[] = Extrude Point {1, {0, 0, 1}};"),
+            "test.geo:2:7: error: 'Extrude Point {tag, {dx, dy, dz}}' is an older form that is "
+            "no longer read; write Extrude {dx, dy, dz} { Point{tag}; }");
+  EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nPhysical Point{\"a\"} = {1};"),
+            "test.geo:2:1: error: a physical group is defined as Physical Point(tag) = {..}; or "
+            "Physical Point(\"name\") = {..};, not with braces");
+}
+
 }  // namespace
 }  // namespace geomesh
