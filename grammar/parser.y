@@ -444,6 +444,12 @@ expr:
 | '-' expr %prec UNARY { $$ = unary("-", std::move($2), @1); }
 | '+' expr %prec UNARY { $$ = unary("+", std::move($2), @1); }
 | '!' expr { $$ = unary("!", std::move($2), @1); }
+| name INCR {  // b = a++; the value before the increment
+    auto variable = makeExpr(ExprKind::Variable, @1); variable->name = std::move($1);
+    $$ = unary("post++", std::move(variable), @2); }
+| name DECR {
+    auto variable = makeExpr(ExprKind::Variable, @1); variable->name = std::move($1);
+    $$ = unary("post--", std::move(variable), @2); }
 | primary { $$ = std::move($1); }
 ;
 
