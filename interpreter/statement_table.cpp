@@ -206,6 +206,9 @@ std::span<const std::string_view> Interpreter::keywordsStartingNoStatement() {
 // Forms of Gmsh 1 and 2 that Gmsh 4 rejects: each is an error naming the form to write.
 void Interpreter::rejectOlderForms(const std::vector<std::string>& words, bool braces,
                                    const SourceLocation& where) {
+  if (words.size() == 3 && words[0] == "Delete" && words[1] == "Physical")
+    fail(where, "'Delete Physical " + words[2] + "{..}' is not a statement; write Physical " +
+                    words[2] + "(tag) -= {..}; or Delete Physicals;");
   if (words.size() != 2) return;
   const std::string& kind = words[1];
   const bool entity = kind == "Point" || kind == "Line" || kind == "Curve" || kind == "Surface" ||
@@ -213,6 +216,10 @@ void Interpreter::rejectOlderForms(const std::vector<std::string>& words, bool b
   if (words[0] == "Extrude" && entity)
     fail(where, "'Extrude " + kind + " {tag, {dx, dy, dz}}' is an older form that is no longer "
                 "read; write Extrude {dx, dy, dz} { " + kind + "{tag}; }");
+  if (words[0] == "Compound" && entity && !braces)
+    fail(where, "'Compound " + kind + "(tag) = {..}' is an older form that is no longer read; "
+                "write the meshing constraint Compound " + (kind == "Line" ? std::string("Curve") : kind) +
+                "{..};");
   if (words[0] == "Physical" && entity && braces)
     fail(where, "a physical group is defined as Physical " + kind + "(tag) = {..}; or Physical " +
                     kind + "(\"name\") = {..};, not with braces");

@@ -145,6 +145,13 @@ TEST(OlderForms, FormsNoLongerReadAreLocatedErrors) {
   EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nx[] = Extrude Point {1, {0, 0, 1}};"),
             "test.geo:2:7: error: 'Extrude Point {tag, {dx, dy, dz}}' is an older form that is "
             "no longer read; write Extrude {dx, dy, dz} { Point{tag}; }");
+  EXPECT_EQ(firstLineOf("Compound Line(10) = {1, 2};"),
+            "test.geo:1:1: error: 'Compound Line(tag) = {..}' is an older form that is no longer "
+            "read; write the meshing constraint Compound Curve{..};");
+  EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nPhysical Point(1) = {1};\n"
+                        "Delete Physical Point{1};"),
+            "test.geo:3:1: error: 'Delete Physical Point{..}' is not a statement; write Physical "
+            "Point(tag) -= {..}; or Delete Physicals;");
   EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nPhysical Point{\"a\"} = {1};"),
             "test.geo:2:1: error: a physical group is defined as Physical Point(tag) = {..}; or "
             "Physical Point(\"name\") = {..};, not with braces");
