@@ -100,7 +100,9 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
   if (text == "Call") return Parser::make_CALL(where);
   if (text == "Plugin") return Parser::make_PLUGIN(where);
   if (text == "Struct") return Parser::make_STRUCT(where);
-  if (text == "Split") return Parser::make_SPLIT(where);  // its own token: two shapes follow
+  // Their own tokens: two shapes follow each (Split Curve{1} Point{2}).
+  if (text == "Split") return Parser::make_SPLIT(where);
+  if (text == "Intersect") return Parser::make_INTERSECT(where);
   if (text == "DefineConstant" || text == "DefineNumber" || text == "DefineString") {
     defineAhead_ = true;
     if (text == "DefineConstant") return Parser::make_DEFINECONSTANT(where);

@@ -39,7 +39,7 @@ using geomesh::grammar::unary;
 %token <std::string> TAILWORD "modifier" ATTR "attribute"
 %token FOR "For" ENDFOR "EndFor" IN "In" IF "If" ELSEIF "ElseIf" ELSE "Else" ENDIF "EndIf"
 %token MACRO "Macro" RETURN "Return" CALL "Call" PLUGIN "Plugin" USINGWIRE "Using Wire"
-%token STRUCT "Struct" SCOPE "::" DOTS "..." SPLIT "Split"
+%token STRUCT "Struct" SCOPE "::" DOTS "..." SPLIT "Split" INTERSECT "Intersect"
 %token DEFINECONSTANT "DefineConstant" DEFINENUMBER "DefineNumber" DEFINESTRING "DefineString"
 %token EQ "==" NE "!=" LE "<=" GE ">=" AND "&&" OR "||" INCR "++" DECR "--"
 %token PLUSEQ "+=" MINUSEQ "-=" TIMESEQ "*=" DIVEQ "/=" APPEND ">>"
@@ -490,6 +490,10 @@ primary:
 | member_ref '[' expr ']' {
     $$ = std::move($1); $$->kind = ExprKind::MemberItem; $$->args.push_back(std::move($3)); }
 | shape { $$ = std::move($1); }
+| INTERSECT shape shape {  // Intersect Curve{1} Surface{2}: words Intersect Curve Surface
+    $$ = std::move($2); $$->words.insert($$->words.begin(), "Intersect"); $$->loc = at(@1);
+    for (auto& word : $3->words) $$->words.push_back(word);
+    for (auto& part : $3->parts) $$->parts.push_back(std::move(part)); }
 | words STRING {  // Surface "*": every surface, as Surface{:}
     $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1); $$->text = std::move($2);
     $$->parts.emplace_back(); $$->parts.back().items.push_back(makeExpr(ExprKind::All, @2)); }

@@ -325,6 +325,22 @@ Value Interpreter::physicalQuery(const ast::Expr& expr, int dim) {
   return Value::list(std::move(result));
 }
 
+// Intersect Curve{curves} Surface{surface}: the tags of new points where the curves cross it.
+Value Interpreter::intersectCurvesWithSurface(const ast::Expr& expr) {
+  if (expr.parts.size() != 2) fail(expr.loc, "expected Intersect Curve{..} Surface{tag}");
+  std::vector<int> curves;
+  for (double t : evaluateNumbers(expr.parts[0].items)) curves.push_back(clampedInteger<int>(t));
+  const std::vector<double> surfaces = evaluateNumbers(expr.parts[1].items);
+  if (surfaces.size() != 1) fail(expr.loc, "Intersect takes one surface, not " +
+                                               std::to_string(surfaces.size()));
+  try {
+    return Value::list(asDoubles(
+        session_.factory().intersectCurvesWithSurface(curves, clampedInteger<int>(surfaces[0]))));
+  } catch (const GeometryError& error) {
+    fail(expr.loc, error.what());
+  }
+}
+
 Value Interpreter::shapeValue(const ast::Expr& expr) {
   const Words& w = expr.words;
   // Surface "*" is Surface{:}; a physical group takes no other string (a group of that name is
@@ -333,6 +349,8 @@ Value Interpreter::shapeValue(const ast::Expr& expr) {
     fail(expr.loc, "'" + w[0] + " " + w.back() + " \"" + expr.text +
                        "\"': only \"*\" (every group) may follow; use {tags} to select groups");
   rejectOlderForms(w, false, expr.loc);
+  if (w == Words{"Intersect", "Curve", "Surface"} || w == Words{"Intersect", "Line", "Surface"})
+    return intersectCurvesWithSurface(expr);
   // Point{n} is the point's coordinates, but Point{:} the tags of all points, as in Gmsh.
   const bool allPoints = expr.parts.size() == 1 && expr.parts[0].items.size() == 1 &&
                          expr.parts[0].items[0]->kind == ast::ExprKind::All;

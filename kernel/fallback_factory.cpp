@@ -55,6 +55,10 @@ void FallbackFactory::addNurbs(int tag, const std::vector<int>& points,
 std::vector<int> FallbackFactory::splitCurve(int tag, const std::vector<int>& points) {
   return route([&](GeometryFactory& f) { return f.splitCurve(tag, points); });
 }
+std::vector<int> FallbackFactory::intersectCurvesWithSurface(const std::vector<int>& curves,
+                                                             int surface) {
+  return route([&](GeometryFactory& f) { return f.intersectCurvesWithSurface(curves, surface); });
+}
 double FallbackFactory::planeDeviation(int tag) const {
   return std::max(primary_.planeDeviation(tag), fallback_.planeDeviation(tag));
 }

@@ -39,6 +39,8 @@ class FallbackFactory final : public GeometryFactory {
                 int degree) override;
   std::vector<int> splitCurve(int tag, const std::vector<int>& points) override;
   double planeDeviation(int tag) const override;
+  std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
+                                              int surface) override;
   void addCurveLoop(int tag, std::vector<int> curves) override;
   void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
   void addFillingSurface(int tag, std::vector<int> curveLoops,

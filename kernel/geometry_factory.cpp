@@ -26,6 +26,9 @@ std::vector<int> GeometryFactory::splitCurve(int, const std::vector<int>&) {
   unsupported("Split Curve");
 }
 double GeometryFactory::planeDeviation(int) const { return 0; }
+std::vector<int> GeometryFactory::intersectCurvesWithSurface(const std::vector<int>&, int) {
+  unsupported("Intersect");
+}
 void GeometryFactory::addCurveLoop(int, std::vector<int>) { unsupported("Curve Loop"); }
 void GeometryFactory::addPlaneSurface(int, std::vector<int>) { unsupported("Plane Surface"); }
 void GeometryFactory::addFillingSurface(int, std::vector<int>, const std::vector<int>&) {

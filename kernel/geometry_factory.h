@@ -53,6 +53,10 @@ class GeometryFactory {
   // its own, each of the curve's kind, with new tags (returned in order along the curve);
   // curve loops and surfaces that used it use the pieces instead.
   virtual std::vector<int> splitCurve(int tag, const std::vector<int>& points);
+  // Intersect Curve{..} Surface{s}: a new point where each curve crosses the surface (curves
+  // stay whole); returns the new points' tags, curve by curve, along each curve.
+  virtual std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
+                                                      int surface);
   // How far the loops of plane surface `tag` pass from the plane fitted to them (0 when the
   // surface is not a plane surface of this factory).
   virtual double planeDeviation(int tag) const;

@@ -48,6 +48,10 @@ class GeoFactory final : public GeometryFactory {
                 int degree) override;
   // Splits Spline, BSpline, Bezier and polyline curves (kernel/geo/geo_split.cpp).
   std::vector<int> splitCurve(int tag, const std::vector<int>& points) override;
+  // Crossings found by sampling each curve's signed distance to the surface and bisecting
+  // where it changes sign (kernel/geo/geo_split.cpp).
+  std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
+                                              int surface) override;
   // The loops of a plane surface need not be exactly plane: the surface lies on the plane
   // fitted to them by least squares, and this is the largest distance of the loops from it.
   double planeDeviation(int tag) const override;

@@ -1,4 +1,5 @@
-// Split Curve: a curve of the built-in kernel cut into pieces at some of its own points.
+// Split Curve (a curve cut into pieces at some of its own points) and Intersect Curve{..}
+// Surface{..} (points where curves cross a surface), in the built-in kernel.
 #include <algorithm>
 #include <cstdlib>
 
@@ -69,6 +70,76 @@ void GeoFactory::replaceCurveInLoops(int tag, const std::vector<int>& pieces) {
   for (auto& [loopTag, loop] : curveLoops_) replaceIn(loop);
   for (auto& [surfaceTag, surface] : surfaces_)
     for (std::vector<int>& loop : surface.loops) replaceIn(loop);
+}
+
+namespace {
+
+// The signed distance from the curve's point at t to the surface, along the surface's normal
+// at the nearest point; nullopt where that nearest point is outside the surface's parameters.
+struct SurfaceSide {
+  const CurveGeometry& curve;
+  const SurfaceGeometry& surface;
+
+  double operator()(double t) const {
+    const Vec3 p = curve.point(t);
+    const Vec2 uv = surface.project(p);
+    const SurfaceDerivatives d = surface.firstDerivatives(uv);
+    const Vec3 n = cross(d.du, d.dv);
+    const double length = norm(n);
+    return length > 0 ? dot(p - surface.point(uv), n) / length : 0.0;
+  }
+};
+
+// The parameters where the curve crosses the surface: sign changes between samples, refined
+// by bisection.
+std::vector<double> crossings(const CurveGeometry& curve, const SurfaceGeometry& surface) {
+  constexpr int kSamples = 64;
+  const SurfaceSide side{curve, surface};
+  const Interval range = curve.range();
+  std::vector<double> found;
+  double t0 = range.min, f0 = side(t0);
+  for (int i = 1; i <= kSamples; ++i) {
+    const double t1 = range.min + (range.max - range.min) * i / kSamples, f1 = side(t1);
+    if ((f0 < 0) != (f1 < 0) || f1 == 0) {
+      double a = t0, b = t1, fa = f0;
+      for (int step = 0; step < 60; ++step) {
+        const double m = 0.5 * (a + b), fm = side(m);
+        if ((fa < 0) == (fm < 0) && fm != 0) a = m, fa = fm;
+        else b = m;
+      }
+      found.push_back(0.5 * (a + b));
+    }
+    t0 = t1, f0 = f1;
+  }
+  return found;
+}
+
+}  // namespace
+
+std::vector<int> GeoFactory::intersectCurvesWithSurface(const std::vector<int>& curves,
+                                                        int surface) {
+  const auto host = surfaces_.find(std::abs(surface));
+  if (host == surfaces_.end()) fail("Intersect: surface ", std::abs(surface), " is not defined");
+  const auto shape = surfaceGeometry(host->second);
+  const ParamBox box = shape->bounds();
+  const double tolerance = absoluteTolerance();
+  std::vector<int> made;
+  for (int c : curves) {
+    const auto curve = curves_.find(std::abs(c));
+    if (curve == curves_.end()) fail("Intersect: curve ", std::abs(c), " is not defined");
+    const auto geometry = curveGeometry(curve->second);
+    for (double t : crossings(*geometry, *shape)) {
+      const Vec3 p = geometry->point(t);
+      const Vec2 uv = shape->project(p);
+      const bool inside = uv.u >= box.u.min - tolerance && uv.u <= box.u.max + tolerance &&
+                          uv.v >= box.v.min - tolerance && uv.v <= box.v.max + tolerance;
+      if (!inside || distance(shape->point(uv), p) > 1e3 * tolerance) continue;
+      const int tag = maxTag(0) + 1;
+      addPoint(tag, p, 0);
+      made.push_back(tag);
+    }
+  }
+  return made;
 }
 
 }  // namespace geomesh

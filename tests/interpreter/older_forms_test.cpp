@@ -77,6 +77,20 @@ TEST(OlderForms, CirclePlaneAndSplitCurve) {
             "test.geo:1:23: error: Split Curve: curve 5 is not defined");
 }
 
+TEST(OlderForms, IntersectCurveWithSurfaceMakesPoints) {
+  EXPECT_EQ(printed("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};\n"
+                    "Point(4) = {0, 1, 0};\n"
+                    "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                    "Curve Loop(1) = {1, 2, 3, 4}; Surface(1) = {1};\n"
+                    "Point(5) = {0.5, 0.3, -1}; Point(6) = {0.5, 0.3, 1}; Line(5) = {5, 6};\n"
+                    "Point(8) = {5, 5, -1}; Point(9) = {5, 5, 1}; Line(6) = {8, 9};\n"
+                    "x[] = Intersect Curve{5, 6} Surface{1}; p[] = Point{x[0]};\n"
+                    "Printf(\"%g %g: %g %g %g\", #x[], x[0], p[0], p[1], p[2]);"),
+            "1 10: 0.5 0.3 0\n");
+  EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nx[] = Intersect Curve{1} Surface{3};"),
+            "test.geo:2:7: error: Intersect: surface 3 is not defined");
+}
+
 TEST(OlderForms, SelectionByStringAndPolarSphere) {
   EXPECT_EQ(printed(std::string(kFourPoints) +
                     "PolarSphere(1) = {1, 2};\nPhysical Point(3) = {1};\n"
