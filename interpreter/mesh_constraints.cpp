@@ -3,6 +3,8 @@
 // in the model's MeshConstraints, which outlive synchronization, and read by the mesher.
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -151,6 +153,41 @@ bool Interpreter::executeFieldOption(const ast::OptionAssignStmt& assign,
     fail(where, "Field options take '=' or '+='");
   }
   return true;
+}
+
+// Geometry.CopyMeshingMethod: a Duplicata's copies take the transfinite and recombination
+// constraints of what they copy, down to their curves (matched through the boundaries, which
+// list a copy's curves in its source's order) and, for transfinite corners, their points.
+void Interpreter::copyMeshingMethod(const std::vector<EntityId>& sources,
+                                    const std::vector<EntityId>& copies) {
+  MeshConstraints& mc = session_.model().meshConstraints();
+  GeometryFactory& factory = session_.factory();
+  std::map<int, int> pointCopies;
+  std::function<void(EntityId, EntityId)> copy = [&](EntityId from, EntityId to) {
+    const int f = std::abs(from.tag), t = std::abs(to.tag);
+    if (from.dim == 0) {
+      pointCopies[f] = t;
+      return;
+    }
+    const std::vector<EntityId> a = factory.boundary({{from.dim, f}}, false);
+    const std::vector<EntityId> b = factory.boundary({{to.dim, t}}, false);
+    if (a.size() == b.size())
+      for (std::size_t k = 0; k < a.size(); ++k) copy(a[k], b[k]);
+    if (from.dim == 1)
+      if (const auto it = mc.transfiniteCurves.find(f); it != mc.transfiniteCurves.end())
+        mc.transfiniteCurves[t] = it->second;
+    if (from.dim == 2) {
+      if (const auto it = mc.recombinedSurfaces.find(f); it != mc.recombinedSurfaces.end())
+        mc.recombinedSurfaces[t] = it->second;
+      if (const auto it = mc.transfiniteSurfaces.find(f); it != mc.transfiniteSurfaces.end()) {
+        TransfiniteSurface law = it->second;
+        for (int& corner : law.corners)
+          if (const auto p = pointCopies.find(corner); p != pointCopies.end()) corner = p->second;
+        mc.transfiniteSurfaces[t] = law;
+      }
+    }
+  };
+  for (std::size_t k = 0; k < sources.size() && k < copies.size(); ++k) copy(sources[k], copies[k]);
 }
 
 }  // namespace geomesh

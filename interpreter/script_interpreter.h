@@ -210,6 +210,8 @@ class Interpreter {
   void defineTransfiniteCurve(const ast::CommandStmt& command, const SourceLocation& where);
   void defineTransfiniteSurface(const ast::CommandStmt& command, const SourceLocation& where);
   void recombineSurfaces(const ast::CommandStmt& command, const SourceLocation& where);
+  void copyMeshingMethod(const std::vector<EntityId>& sources,
+                         const std::vector<EntityId>& copies);
   void setSurfaceAlgorithm(const ast::CommandStmt& command, const SourceLocation& where);
   void defineField(const ast::CommandStmt& command, const SourceLocation& where);
   void setBackgroundField(const ast::CommandStmt& command, const SourceLocation& where);

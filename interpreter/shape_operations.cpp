@@ -149,8 +149,13 @@ std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr
   const std::string& kind = shape.words[0];
   // The shapes come last, in braces: { Point{1}; } or, without semicolons, { Duplicata{..} }.
   try {
-    if (kind == "Duplicata" && shape.parts.size() == 1)
-      return session_.factory().duplicate(shapesIn(shape.parts[0]));
+    if (kind == "Duplicata" && shape.parts.size() == 1) {
+      const std::vector<EntityId> sources = shapesIn(shape.parts[0]);
+      std::vector<EntityId> copies = session_.factory().duplicate(sources);
+      if (session_.options().number("Geometry.CopyMeshingMethod") != 0)
+        copyMeshingMethod(sources, copies);
+      return copies;
+    }
     if ((kind == "Boundary" || kind == "CombinedBoundary") && shape.parts.size() == 1)
       return session_.factory().boundary(shapesIn(shape.parts[0]), kind == "CombinedBoundary");
     if (isTransform(kind) && shape.parts.size() == 2) {

@@ -144,7 +144,11 @@ TopoDS_Shape unify(const TopoDS_Shape& shape, std::vector<BooleanInput>& inputs)
         after.Append(s);
       } else {
         changed = true;
-        for (const TopoDS_Shape& image : images) after.Append(image);
+        // Pieces merged into one face give it once.
+        for (const TopoDS_Shape& image : images)
+          if (std::none_of(after.begin(), after.end(),
+                           [&](const TopoDS_Shape& a) { return a.IsSame(image); }))
+            after.Append(image);
       }
     }
     in.deleted = after.IsEmpty();
@@ -191,6 +195,35 @@ std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) 
       out.push_back(e);
       for (int sub = dim - 1; sub >= 0; --sub)
         TopExp::MapShapes(it.Current(), kTypes[sub], inListed);
+    }
+  }
+  return out;
+}
+
+struct TaggedShape {
+  int dim, tag;
+  TopoDS_Shape shape;
+};
+
+// The curves and faces of deleted tools that the result holds as they were, with their tags,
+// which they keep, as in the reference: the curves of a plate the tools cut holes in bound the holes
+// with the tools' tags (the objects' sub-shapes are numbered anew). A union of volumes makes
+// all its faces anew (the reference's fused solids share no face with their inputs).
+std::vector<TaggedShape> toolSubShapesKept(const OccShapes& shapes,
+                                           const std::vector<BooleanInput>& inputs,
+                                           std::size_t objectCount, const TopoDS_Shape& result,
+                                           SolidModeling::BooleanOperation op) {
+  std::vector<TaggedShape> out;
+  for (int dim = 2; dim >= 1; --dim) {  // points are numbered anew
+    TopTools_IndexedMapOfShape inResult;
+    TopExp::MapShapes(result, kTypes[dim], inResult);
+    for (std::size_t i = objectCount; i < inputs.size(); ++i) {
+      const BooleanInput& in = inputs[i];
+      if (!in.remove || in.unchanged() || dim >= in.id.dim) continue;
+      if (op == SolidModeling::BooleanOperation::Union && in.id.dim == 3) continue;
+      for (TopExp_Explorer it(in.shape, kTypes[dim]); it.More(); it.Next())
+        if (inResult.Contains(it.Current()) && shapes.isBound(dim, it.Current()))
+          out.push_back({dim, shapes.tagOf(dim, it.Current()), it.Current()});
     }
   }
   return out;
@@ -250,9 +283,17 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   const TopoDS_Shape tagged =
       tag >= 0 ? taggedShape(result, tag, name, taggedDim) : TopoDS_Shape();
 
-  // Deleted inputs go, unless the result holds them untouched.
+  // Deleted inputs go, unless the result holds them untouched; the tags of the tools'
+  // sub-shapes that the result keeps as they were are noted first (see toolSubShapesKept).
+  const std::vector<TaggedShape> kept =
+      booleanOptions_.preserveNumbering
+          ? toolSubShapesKept(*shapes_, inputs, objects.size(), result, op)
+          : std::vector<TaggedShape>{};
   for (const BooleanInput& in : inputs)
     if (in.remove && !in.unchanged()) shapes_->unbind(in.id.dim, in.id.tag, true);
+  for (const TaggedShape& k : kept)
+    if (!shapes_->isBound(k.dim, k.shape) && !shapes_->contains(k.dim, k.tag))
+      shapes_->bindShape(k.dim, k.tag, k.shape);
   // A tag given to the result goes to its shape before any other.
   if (tag >= 0 && !shapes_->isBound(taggedDim, tagged)) {
     if (shapes_->contains(taggedDim, tag))

@@ -61,6 +61,12 @@ void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
   if (curveLoops.size() != 1) throw GeometryError(what + ": a filling takes one curve loop");
   const TopoDS_Shape& wire = shapes_->findWire(std::abs(curveLoops[0]));
   const TopoDS_Shape face = guarded(what, [&] {
+    // A plane loop is filled by its plane: exact, so that Booleans with other plane faces
+    // find the faces coplanar (a plate surface through it is plane only to its tolerance).
+    if (through.empty()) {
+      BRepBuilderAPI_MakeFace plane(TopoDS::Wire(wire), true);
+      if (plane.IsDone()) return TopoDS_Shape(plane.Face());
+    }
     // Degree 2 (OpenCASCADE defaults otherwise), as the reference builds its fillings.
     BRepOffsetAPI_MakeFilling filling(2);
     for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())

@@ -228,7 +228,10 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
   constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
   if (integral.total() > kMaxSegments)
     throw MeshError(id, "the mesh size asks for more than 1e9 segments");
-  const int segments = segmentCount(integral.total(), rules.minimumSegments(g), closed);
+  int segments = segmentCount(integral.total(), rules.minimumSegments(g), closed);
+  // A curve shorter than its size keeps its one segment, as in the reference.
+  if (segments % 2 != 0 && integral.total() >= 1 && rules.evenCurves.contains(curve.tag))
+    ++segments;
 
   std::vector<NodeIndex> chain{pointNode(mesh, curve.startPoint)};
   for (int k = 1; k < segments; ++k) {

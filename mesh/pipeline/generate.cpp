@@ -127,9 +127,11 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
   const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
+  const std::vector<std::uint64_t> kept = embeddedEdges(surface, mesh);
   recombineTriangles(mesh, em, *angle,
                      simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom,
-                     embeddedEdges(surface, mesh));
+                     kept);
+  if (!simple) pairLeftoverTriangles(*surface.geometry, mesh, em, kept);
   smoothMixedMesh(*surface.geometry, mesh, em, std::max(options.smoothing, 1) * 3);
 }
 
@@ -191,9 +193,9 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     log.warning("Mesh.ElementOrder " + std::to_string(options.elementOrder) +
                 ": high-order elements are not supported yet; the mesh is first order");
   SizeRules rules = SizeRules::from(model, options);
-  // Full-quad recombination of every surface meshes twice as coarse, then splits each
-  // element into quadrangles, which halves the sizes back.
-  if (options.recombineAll && isFullQuad(options) && dim >= 2) rules.factor *= 2;
+  // Full-quad recombination (of every surface, or of those asked for) meshes twice as coarse,
+  // then splits each element into quadrangles, which halves the sizes back.
+  if (isFullQuad(options) && wantsAllQuadrangles(model, options) && dim >= 2) rules.factor *= 2;
   const SizeFields fields(model, log);
   meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
@@ -230,7 +232,11 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
         log.warning("Mesh.Algorithm3D " + why + ": volumes are meshed with " + volume.title +
                     " (" + std::to_string(volume.code) + ")");
       warned = true;
-      volume.mesh(model, options, entry.first, mesh);
+      const EntityId where{3, entry.first};
+      InteriorSize interiorSize;
+      if (fields.hasBackground())
+        interiorSize = [&fields, where](Vec3 p) { return fields.at(p, where); };
+      volume.mesh(model, options, entry.first, interiorSize, mesh);
     }
     extruded.meshVolumes(mesh);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");

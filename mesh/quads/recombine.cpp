@@ -135,8 +135,8 @@ std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngle
   const double minQuality =
       blossom ? kConvex : 1 - std::clamp(maxAngleDeviation, 0.0, 90.0) / 90;
   const std::vector<Candidate> ranked = candidates(mesh, *block, minQuality, keptEdges);
-  const std::vector<std::uint8_t> chosen =
-      blossom ? blossomChoice(ranked, block->size()) : greedyChoice(ranked, block->size());
+  // Both complete the greedy pairs by augmenting paths; Simple keeps to the angle bound.
+  const std::vector<std::uint8_t> chosen = blossomChoice(ranked, block->size());
   std::vector<std::uint8_t> paired(block->size(), 0);
   std::vector<NodeIndex> quads;
   for (std::size_t k = 0; k < ranked.size(); ++k) {

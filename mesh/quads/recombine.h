@@ -15,9 +15,10 @@ namespace geomesh {
 // Two triangles sharing an edge that is not on the boundary make a candidate quadrangle when
 // it is convex and every corner angle stays within `maxAngleDeviation` degrees of 90
 // (Recombine Surface{..} = angle; 45 by default). Candidates are taken greedily, best
-// corner-angle quality first (Simple), or so, then completed by Edmonds' blossom algorithm
-// into a matching with as many quadrangles as possible (Blossom: every convex pair is a
-// candidate); each triangle joins at most one quadrangle, unpaired triangles stay. The Quad4
+// corner-angle quality first, then completed by Edmonds' blossom algorithm into a matching
+// with as many quadrangles as possible; Simple keeps to the angle bound, Blossom takes every
+// convex pair as a candidate. Each triangle joins at most one quadrangle, unpaired triangles
+// stay (pairLeftoverTriangles may then pair them). The Quad4
 // elements keep the triangles' orientation. Returns the number of quadrangles made.
 // Triangles are never joined across an edge of `keptEdges` (edge keys of curve segments,
 // sorted: see edgeKey).
@@ -25,6 +26,15 @@ enum class RecombinationAlgorithm { Simple = 0, Blossom = 1 };
 std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngleDeviation,
                                RecombinationAlgorithm algorithm,
                                const std::vector<std::uint64_t>& keptEdges = {});
+
+// Joins the triangles recombination left alone, two at a time, into quadrangles: on a
+// shortest path of elements from one to the nearest other (across sides not in `keptEdges`),
+// the sides consecutive elements share get a middle node, and each element on the path is
+// split into 2 or 3 quadrangles (a triangle or a quadrangle with adjacent split sides around
+// a new centre node). New nodes lie on the surface, with their parameters. A pair whose split
+// would make a quadrangle that is not convex is left as it is. Returns the pairs joined.
+std::size_t pairLeftoverTriangles(const SurfaceGeometry& g, Mesh& mesh, EntityMesh& em,
+                                  const std::vector<std::uint64_t>& keptEdges = {});
 
 // The key of the edge between two nodes, whatever their order.
 inline std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {

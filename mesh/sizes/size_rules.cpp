@@ -115,6 +115,12 @@ SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
   rules.elementsPerTwoPi = std::max(options.sizeFromCurvature, 0.0);
   rules.minCircleNodes = options.minCircleNodes;
   rules.minCurveNodes = options.minCurveNodes;
+  const MeshConstraints& constraints = model.meshConstraints();
+  if (options.recombinationAlgorithm == 1)
+    for (const auto& [tag, surface] : model.surfaces())
+      if ((options.recombineAll || constraints.recombinedSurfaces.contains(tag)) &&
+          !constraints.transfiniteSurfaces.contains(tag))
+        for (int curve : model.boundary({2, tag})) rules.evenCurves.insert(std::abs(curve));
   if (rules.elementsPerTwoPi > 0)
     for (const auto& entry : model.curves()) {
       const ModelCurve& curve = entry.second;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <utility>
 
 #include "kernel/model.h"
@@ -29,6 +30,10 @@ struct SizeRules {
   int minCircleNodes = 7;          // per full turn of a circle or ellipse arc
   int minCurveNodes = 3;           // on curves that are neither straight nor arcs
   std::map<int, double> pointCurvatureSizes = {};  // point tag -> bound from curvature
+  // Curves given an even number of segments, since an all-quadrangle mesh needs an even
+  // number of boundary edges: those bounding a surface (not transfinite) recombined by the
+  // Blossom algorithm (Mesh.RecombinationAlgorithm 1), as the reference does.
+  std::set<int> evenCurves = {};
 
   static SizeRules from(const Model& model, const MeshOptions& options);
   // The sizes a curve's end points ask for, before clamping (their curvature bound aside).

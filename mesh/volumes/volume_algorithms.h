@@ -8,6 +8,7 @@
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
 #include "mesh/core/mesh_options.h"
+#include "mesh/volumes/volume_mesher.h"
 
 namespace geomesh {
 
@@ -18,7 +19,8 @@ struct VolumeAlgorithm {
   const char* name;   // -algo name
   const char* alias;  // another -algo name, or null
   const char* title;  // as messages name it
-  void (*mesh)(const Model& model, const MeshOptions& options, int volumeTag, Mesh& mesh);
+  void (*mesh)(const Model& model, const MeshOptions& options, int volumeTag,
+               const InteriorSize& interiorSize, Mesh& mesh);
   int fallback;  // code used instead when `mesh` is null
 };
 

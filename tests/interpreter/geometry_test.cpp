@@ -54,6 +54,35 @@ TEST(Geometry, FillingTails) {
   EXPECT_EQ(run.session.model().surfaces().size(), 2u);
 }
 
+// Geometry.CopyMeshingMethod = 1: a Duplicata's copies take their sources' transfinite and
+// recombination constraints, curves included; without it they take none.
+TEST(Geometry, CopyMeshingMethodCopiesConstraints) {
+  for (int copyMethod : {1, 0}) {
+    ScriptRun run;
+    run.run("Geometry.CopyMeshingMethod = " + std::to_string(copyMethod) + ";\n" +
+            std::string(kSquare) +
+            "Curve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
+            "Transfinite Curve{1, 3} = 5 Using Progression 1.2;\n"
+            "Transfinite Curve{2, 4} = 3;\n"
+            "Transfinite Surface{1};\nRecombine Surface{1};\n"
+            "s[] = Translate{2, 0, 0}{ Duplicata{ Surface{1}; } };\n");
+    const MeshConstraints& mc = run.session.model().meshConstraints();
+    EXPECT_EQ(mc.transfiniteSurfaces.size(), copyMethod ? 2u : 1u);
+    EXPECT_EQ(mc.recombinedSurfaces.size(), copyMethod ? 2u : 1u);
+    EXPECT_EQ(mc.transfiniteCurves.size(), copyMethod ? 8u : 4u);
+    if (copyMethod == 1) {
+      // The copy's first curve copies curve 1: 5 nodes, progression 1.2.
+      run.session.synchronize();
+      const int copy = run.session.model().surfaces().rbegin()->first;
+      ASSERT_NE(copy, 1);
+      const int first = std::abs(run.session.factory().boundary({{2, copy}}, false)[0].tag);
+      ASSERT_TRUE(mc.transfiniteCurves.contains(first));
+      EXPECT_EQ(mc.transfiniteCurves.at(first).nodes, 5);
+      EXPECT_DOUBLE_EQ(mc.transfiniteCurves.at(first).coefficient, 1.2);
+    }
+  }
+}
+
 TEST(Geometry, CircleErrorsCarryTheLocation) {
   std::string error = firstLineOf("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0};\nCircle(1) = {2, 1, 7};");
   EXPECT_EQ(error.substr(0, 21), "test.geo:2:1: error: ") << error;

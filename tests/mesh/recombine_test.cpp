@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 
 #include "mesh/pipeline/generate.h"
@@ -107,6 +108,102 @@ TEST(Recombine, RecombineAllAppliesToEverySurface) {
   generateMesh(b.model, options, 2, mesh, log);
   EXPECT_GT(count(mesh, 1).quads, 80u);
   EXPECT_TRUE(checkMesh(b.model, mesh).ok());
+}
+
+// An all-quadrangle mesh needs an even number of boundary edges: curves bounding a surface
+// recombined by Blossom get an even number of segments (5 -> 6 at size 0.2), except one
+// shorter than its size (curve 3), which keeps its one segment; Simple leaves the counts
+// alone.
+TEST(Recombine, BlossomCurvesGetEvenSegmentCounts) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0.9, 1.05}, {0, 1}}, 0.2)});
+  b.model.meshConstraints().recombinedSurfaces[1] = 45;
+  for (int algorithm : {1, 0}) {
+    MeshOptions options;
+    options.recombinationAlgorithm = algorithm;
+    Mesh mesh;
+    SilentSink log;
+    generateMesh(b.model, options, 2, mesh, log);
+    EXPECT_EQ(mesh.find({1, 1})->findBlock(ElementType::Line2)->size(), algorithm ? 6u : 5u);
+    EXPECT_EQ(mesh.find({1, 3})->findBlock(ElementType::Line2)->size(), 1u);
+  }
+}
+
+// A plate with holes of several sizes recombined by default: only quadrangles.
+TEST(Recombine, BlossomGivesOnlyQuadranglesAroundHoles) {
+  PolygonModelBuilder b;
+  std::vector<std::vector<int>> loops{b.polygon({{0, 0}, {3, 0}, {3, 2}, {0, 2}}, 0.08)};
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j)
+      loops.push_back(b.circle({0.4 + 0.55 * i, 0.4 + 0.6 * j}, 0.1 + 0.01 * (i + j), 0.04));
+  b.surface(loops);
+  b.model.meshConstraints().recombinedSurfaces[1] = 45;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 2, mesh, log);
+  const Counts c = count(mesh, 1);
+  EXPECT_EQ(c.triangles, 0u);
+  EXPECT_GT(c.quads, 1500u);
+  EXPECT_GT(c.minQuality, 0.2);
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
+}
+
+// Two triangles three quadrangles apart: the elements between are split along the path, so
+// that only quadrangles remain, convex, covering the same area, sharing every inner side.
+TEST(Recombine, LeftoverTrianglesArePairedAlongAPath) {
+  Mesh mesh;
+  const Vec3 at[] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {0, 1, 0},
+                     {1, 1, 0}, {2, 1, 0}, {3, 1, 0}, {0, 0.5, 0}, {3, 0.5, 0}};
+  for (Vec3 p : at) mesh.addNode(p);
+  EntityMesh& em = mesh.entity({2, 1});
+  em.block(ElementType::Triangle3).nodes = {8, 0, 1, 2, 3, 9};
+  em.block(ElementType::Quad4).nodes = {8, 1, 5, 4, 1, 2, 6, 5, 2, 9, 7, 6};
+  const testing::FlatGeometry plane;
+  EXPECT_EQ(pairLeftoverTriangles(plane, mesh, em), 1u);
+  EXPECT_EQ(em.findBlock(ElementType::Triangle3), nullptr);
+  const ElementBlock* quads = em.findBlock(ElementType::Quad4);
+  ASSERT_NE(quads, nullptr);
+  double area = 0;
+  std::map<std::uint64_t, int> sides;
+  for (std::size_t e = 0; e < quads->size(); ++e) {
+    const auto n = quads->element(e);
+    const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]), d = mesh.node(n[3]);
+    EXPECT_GT(quadAngleQuality(a, b, c, d, {0, 0, 1}), 0) << "quadrangle " << e;
+    area += 0.5 * norm(cross(c - a, d - b));
+    for (int k = 0; k < 4; ++k) ++sides[edgeKey(n[k], n[(k + 1) % 4])];
+  }
+  EXPECT_NEAR(area, 3, 1e-12);
+  int outer = 0;
+  for (const auto& [key, uses] : sides) {
+    EXPECT_LE(uses, 2);
+    outer += uses == 1;
+  }
+  EXPECT_EQ(outer, 10);  // the outline, unchanged: no node was added on it
+  EXPECT_EQ(em.nodes.size() * 2, em.parametric.size());
+}
+
+// Full-quad recombination (Mesh.RecombinationAlgorithm 3) of one surface meshes it twice as
+// coarse, then splits every element, as the reference does: every curve has an even number
+// of segments, about as many as at the size asked for (the reference: 168 quadrangles on a
+// square with a hole drawn as two arcs).
+TEST(Recombine, FullQuadOfOneSurfaceHalvesThenSplits) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.1), b.circle({0.5, 0.5}, 0.2, 0.1)});
+  b.model.meshConstraints().recombinedSurfaces[1] = 45;
+  MeshOptions options;
+  options.recombinationAlgorithm = 3;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, options, 2, mesh, log);
+  const Counts c = count(mesh, 1);
+  EXPECT_EQ(c.triangles, 0u);
+  EXPECT_GT(c.quads, 110u);
+  EXPECT_LT(c.quads, 210u);
+  for (int curve : {1, 2, 3, 4, 5})
+    EXPECT_EQ(mesh.find({1, curve})->findBlock(ElementType::Line2)->size() % 2, 0u);
+  EXPECT_GE(mesh.elementCount(1), 50u);
+  EXPECT_LE(mesh.elementCount(1), 60u);
 }
 
 }  // namespace

@@ -182,8 +182,8 @@ void expectValid(const Case& c, const Mesh& mesh) {
 
 void expectOptimized(Case (*make)(), double minGamma) {
   Case raw = make(), optimized = make();
-  meshVolume(raw.model, withOptimize(false), 1, raw.mesh);
-  meshVolume(optimized.model, withOptimize(true), 1, optimized.mesh);
+  meshVolume(raw.model, withOptimize(false), 1, nullptr, raw.mesh);
+  meshVolume(optimized.model, withOptimize(true), 1, nullptr, optimized.mesh);
   expectValid(raw, raw.mesh);
   expectValid(optimized, optimized.mesh);
   const QualityStats before = meshQuality(raw.mesh, 3, QualityMeasure::Gamma);
@@ -210,8 +210,8 @@ TEST(TetOptimizer, CubeWithSphericalHole) { expectOptimized(cubeWithSphericalHol
 
 TEST(TetOptimizer, Deterministic) {
   Case first = cubeWithSphericalHole(), second = cubeWithSphericalHole();
-  meshVolume(first.model, MeshOptions{}, 1, first.mesh);
-  meshVolume(second.model, MeshOptions{}, 1, second.mesh);
+  meshVolume(first.model, MeshOptions{}, 1, nullptr, first.mesh);
+  meshVolume(second.model, MeshOptions{}, 1, nullptr, second.mesh);
   EXPECT_EQ(tetNodes(first.mesh), tetNodes(second.mesh));
   EXPECT_TRUE(std::equal(first.mesh.coordinates().begin(), first.mesh.coordinates().end(),
                          second.mesh.coordinates().begin(), second.mesh.coordinates().end()));
@@ -219,7 +219,7 @@ TEST(TetOptimizer, Deterministic) {
 
 TEST(TetOptimizer, NothingBelowThresholdChangesNothing) {
   Case c = unitCube();
-  meshVolume(c.model, withOptimize(false), 1, c.mesh);
+  meshVolume(c.model, withOptimize(false), 1, nullptr, c.mesh);
   const std::vector<NodeIndex> before = tetNodes(c.mesh);
   const std::vector<double> xyz(c.mesh.coordinates().begin(), c.mesh.coordinates().end());
   const TetOptimizerStats stats = optimizeTetrahedra(c.mesh, {3, 1}, 0);

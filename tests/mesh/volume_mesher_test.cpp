@@ -114,7 +114,7 @@ TEST(VolumeMesher, UnitCubeFromTwelveTriangles) {
   Mesh mesh;
   BoxSurface box(mesh, {0, 0, 0}, {1, 1, 1}, 1, 1);
   ASSERT_EQ(box.faces.size(), 12u);
-  meshVolume(boxModel(1), MeshOptions{}, 1, mesh);
+  meshVolume(boxModel(1), MeshOptions{}, 1, nullptr, mesh);
   expectValidTetMesh(mesh, box.faces, 1);
 }
 
@@ -122,7 +122,7 @@ TEST(VolumeMesher, FinerCubeGetsInteriorNodes) {
   Mesh mesh;
   BoxSurface box(mesh, {0, 0, 0}, {1, 1, 1}, 6, 1);
   const std::size_t boundaryNodes = mesh.nodeCount();
-  meshVolume(boxModel(1), MeshOptions{}, 1, mesh);
+  meshVolume(boxModel(1), MeshOptions{}, 1, nullptr, mesh);
   expectValidTetMesh(mesh, box.faces, 1);
   const EntityMesh* em = mesh.find({3, 1});
   EXPECT_GT(em->nodes.size(), 0u);
@@ -139,7 +139,7 @@ TEST(VolumeMesher, InnerShellIsAHole) {
   BoxSurface inner(mesh, {0.25, 0.25, 0.25}, {0.75, 0.75, 0.75}, 2, 7);
   std::vector<Face> all = outer.faces;
   all.insert(all.end(), inner.faces.begin(), inner.faces.end());
-  meshVolume(boxModel(2), MeshOptions{}, 1, mesh);
+  meshVolume(boxModel(2), MeshOptions{}, 1, nullptr, mesh);
   expectValidTetMesh(mesh, all, 1 - 0.125);
 }
 
@@ -150,13 +150,13 @@ TEST(VolumeMesher, MissingSurfaceMeshNamesVolumeAndSurface) {
   model.addSurface({7, {}, nullptr, {}, {}});
   model.addVolume({1, {{1, 2, 3, 4, 5, 6, 7}}});
   try {
-    meshVolume(model, MeshOptions{}, 1, mesh);
+    meshVolume(model, MeshOptions{}, 1, nullptr, mesh);
     FAIL() << "no error";
   } catch (const MeshError& e) {
     EXPECT_EQ(e.entity, (EntityId{3, 1}));
     EXPECT_NE(std::string(e.what()).find("surface 7 has no triangle mesh"), std::string::npos);
   }
-  EXPECT_THROW(meshVolume(model, MeshOptions{}, 2, mesh), MeshError);
+  EXPECT_THROW(meshVolume(model, MeshOptions{}, 2, nullptr, mesh), MeshError);
 }
 
 TEST(VolumeMesher, IntersectingBoundaryIsAnError) {
@@ -166,7 +166,7 @@ TEST(VolumeMesher, IntersectingBoundaryIsAnError) {
   Model model = boxModel(2);
   model.addVolume({1, {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}}});
   try {
-    meshVolume(model, MeshOptions{}, 1, mesh);
+    meshVolume(model, MeshOptions{}, 1, nullptr, mesh);
     FAIL() << "no error";
   } catch (const MeshError& e) {
     EXPECT_NE(std::string(e.what()).find("boundary intersects itself"), std::string::npos)
@@ -191,7 +191,7 @@ TEST(VolumeMesher, OverlappingCoplanarTrianglesAreAnError) {
   }
   Model model = boxModel(2);
   model.addVolume({1, {{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}}});
-  EXPECT_THROW(meshVolume(model, MeshOptions{}, 1, mesh), MeshError);
+  EXPECT_THROW(meshVolume(model, MeshOptions{}, 1, nullptr, mesh), MeshError);
 }
 
 // A face folded onto its neighbour: two triangles sharing an edge, on the same side of it.
@@ -201,7 +201,7 @@ TEST(VolumeMesher, FoldedBoundaryIsAnError) {
   // Move the node at (1, 1, 1) into the plane z = 0, inside the bottom face.
   for (NodeIndex i = 0; i < mesh.nodeCount(); ++i)
     if (mesh.node(i) == Vec3{1, 1, 1}) mesh.setNode(i, {0.25, 0.5, 0});
-  EXPECT_THROW(meshVolume(boxModel(1), MeshOptions{}, 1, mesh), MeshError);
+  EXPECT_THROW(meshVolume(boxModel(1), MeshOptions{}, 1, nullptr, mesh), MeshError);
 }
 
 }  // namespace
