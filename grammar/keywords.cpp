@@ -14,7 +14,7 @@ constexpr std::string_view kCommandWords[] = {
     "CatmullRom", "Chamfer", "Characteristic", "Circle", "ClassifySurfaces", "Closest", "Coherence", "Cohomology",
     "Color", "CombinedBoundary", "Compound", "Cone", "CreateGeometry", "CreateTopology", "Curve",
     "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Ellipsis", "Error", "Exit",
-    "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide",
+    "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide", "Hole",
     "Homology", "Include", "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm",
     "MeshSize", "NewModel", "NonBlockingSystem", "NonBlockingSystemCall", "Nurbs", "OptimizeMesh", "PartitionMesh", "Periodic",
     "Physical", "Physicals", "Plane", "Point", "PointsOf", "PolarSphere", "PostProcessing", "Print", "Printf",

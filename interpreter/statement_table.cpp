@@ -96,6 +96,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Fillet", &Interpreter::executeRounding},
       {"HealShapes ...", &Interpreter::unsupportedStatement},
       {"Hide ...", &Interpreter::skipInBatch},
+      {"Hole ...", &Interpreter::rejectReservedWord},
       {"Homology ...", &Interpreter::unsupportedStatement},
       {"Include", &Interpreter::executeInclude},
       {"Line", &Interpreter::defineEntity},
@@ -223,6 +224,11 @@ void Interpreter::rejectOlderForms(const std::vector<std::string>& words, bool b
   if (words[0] == "Physical" && entity && braces)
     fail(where, "a physical group is defined as Physical " + kind + "(tag) = {..}; or Physical " +
                     kind + "(\"name\") = {..};, not with braces");
+}
+
+// Words Gmsh reserves without any statement of theirs (Hole, from its first versions).
+void Interpreter::rejectReservedWord(const ast::CommandStmt& command, const SourceLocation& where) {
+  fail(where, "'" + command.words[0] + "' is a reserved word that starts no statement");
 }
 
 void Interpreter::unsupportedStatement(const ast::CommandStmt& command,

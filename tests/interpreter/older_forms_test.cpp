@@ -159,6 +159,8 @@ TEST(OlderForms, FormsNoLongerReadAreLocatedErrors) {
   EXPECT_EQ(firstLineOf("Point(1) = {0, 0, 0};\nx[] = Extrude Point {1, {0, 0, 1}};"),
             "test.geo:2:7: error: 'Extrude Point {tag, {dx, dy, dz}}' is an older form that is "
             "no longer read; write Extrude {dx, dy, dz} { Point{tag}; }");
+  EXPECT_EQ(firstLineOf("Hole(1) = {1};"),
+            "test.geo:1:1: error: 'Hole' is a reserved word that starts no statement");
   EXPECT_EQ(firstLineOf("Compound Line(10) = {1, 2};"),
             "test.geo:1:1: error: 'Compound Line(tag) = {..}' is an older form that is no longer "
             "read; write the meshing constraint Compound Curve{..};");
