@@ -158,6 +158,7 @@ class Interpreter {
   std::optional<Vec3> circlePlaneNormal(const ast::CommandStmt& command);
   void executePeriodicByTranslation(const ast::CommandStmt& command, const SourceLocation& where);
   Value intersectCurvesWithSurface(const ast::Expr& expr);
+  void executeCoherencePoints(const ast::CommandStmt& command, const SourceLocation& where);
   void rejectReservedWord(const ast::CommandStmt& command, const SourceLocation& where);
   void rejectOlderForms(const std::vector<std::string>& words, bool braces,
                         const SourceLocation& where);

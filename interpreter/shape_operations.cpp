@@ -259,6 +259,17 @@ void Interpreter::executePeriodicByTranslation(const ast::CommandStmt& command,
   }
 }
 
+// Coherence Point{a, b, ..}; merges the points into the first, wherever they are.
+void Interpreter::executeCoherencePoints(const ast::CommandStmt& command,
+                                         const SourceLocation& where) {
+  if (!command.shape || command.value) return unsupportedStatement(command, where);
+  try {
+    session_.factory().coherePoints(shapeTags(*command.shape, 0));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
 void Interpreter::executeDeletePhysicals(const ast::CommandStmt& command,
                                          const SourceLocation& where) {
   if (command.shape) return unsupportedStatement(command, where);

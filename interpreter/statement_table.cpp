@@ -68,6 +68,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"ClassifySurfaces ...", &Interpreter::unsupportedStatement},
       {"Coherence", &Interpreter::executeCoherence},
       {"Coherence Mesh", &Interpreter::executeCoherenceMesh},
+      {"Coherence Point", &Interpreter::executeCoherencePoints},
       {"Cohomology ...", &Interpreter::unsupportedStatement},
       {"Color ...", &Interpreter::skipInBatch},
       {"CombinedBoundary", &Interpreter::executeShapeOperation},

@@ -59,6 +59,9 @@ std::vector<int> FallbackFactory::intersectCurvesWithSurface(const std::vector<i
                                                              int surface) {
   return route([&](GeometryFactory& f) { return f.intersectCurvesWithSurface(curves, surface); });
 }
+void FallbackFactory::coherePoints(const std::vector<int>& points) {
+  route([&](GeometryFactory& f) { f.coherePoints(points); });
+}
 double FallbackFactory::planeDeviation(int tag) const {
   return std::max(primary_.planeDeviation(tag), fallback_.planeDeviation(tag));
 }

@@ -39,6 +39,7 @@ class FallbackFactory final : public GeometryFactory {
                 int degree) override;
   std::vector<int> splitCurve(int tag, const std::vector<int>& points) override;
   double planeDeviation(int tag) const override;
+  void coherePoints(const std::vector<int>& points) override;
   std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
                                               int surface) override;
   void addCurveLoop(int tag, std::vector<int> curves) override;

@@ -26,6 +26,7 @@ std::vector<int> GeometryFactory::splitCurve(int, const std::vector<int>&) {
   unsupported("Split Curve");
 }
 double GeometryFactory::planeDeviation(int) const { return 0; }
+void GeometryFactory::coherePoints(const std::vector<int>&) { unsupported("Coherence Point"); }
 std::vector<int> GeometryFactory::intersectCurvesWithSurface(const std::vector<int>&, int) {
   unsupported("Intersect");
 }

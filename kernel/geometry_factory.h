@@ -99,6 +99,9 @@ class GeometryFactory {
                                         const ExtrusionMotion& motion,
                                         const ExtrusionLayers& layers);
   virtual void coherence();
+  // Coherence Point{a, b, ..}: the points after the first become the first, wherever they are
+  // used; curves and surfaces made identical by it then merge as in Coherence.
+  virtual void coherePoints(const std::vector<int>& points);
 
   // Queries. maxTag: the largest tag given so far; dim 0..3 for entities, kCurveLoop and
   // kSurfaceLoop for loops; 0 when none.

@@ -116,6 +116,7 @@ class GeoFactory final : public GeometryFactory {
   // Coherence: merges points closer than the tolerance (the lowest tag stays), then the
   // curves and surfaces that have become identical.
   void coherence() override;
+  void coherePoints(const std::vector<int>& points) override;
 
   // Extrude{..}{shapes} (kernel/geo/geo_extrude.cpp): for each shape in turn, its top (its
   // image at the end of the motion), the entity swept (one dimension higher), then the

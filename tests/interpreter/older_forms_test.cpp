@@ -91,6 +91,15 @@ TEST(OlderForms, IntersectCurveWithSurfaceMakesPoints) {
             "test.geo:2:7: error: Intersect: surface 3 is not defined");
 }
 
+TEST(OlderForms, CoherencePointMergesIntoTheFirst) {
+  EXPECT_EQ(printed("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};\n"
+                    "Point(4) = {0, 1, 0}; Line(1) = {1, 2}; Line(2) = {3, 4};\n"
+                    "Coherence Point{2, 3};\n"
+                    "p[] = Point{:}; b[] = Boundary{Curve{2};}; q[] = Point{2};\n"
+                    "Printf(\"%g | %g %g | %g %g\", #p[], b[0], b[1], q[0], q[1]);"),
+            "3 | 2 4 | 1 0\n");
+}
+
 TEST(OlderForms, SelectionByStringAndPolarSphere) {
   EXPECT_EQ(printed(std::string(kFourPoints) +
                     "PolarSphere(1) = {1, 2};\nPhysical Point(3) = {1};\n"
