@@ -31,7 +31,7 @@ enum class ExprKind {
   Element,       // name[args[0]] (or the old name(args[0]) when name is no function)
   WholeList,     // name[] or name()
   Count,         // #args[0]: number of items of a list
-  Unary,         // text is the operator ("-", "+", "!"); args[0]
+  Unary,         // text is the operator ("-", "+", "!", "post++", "post--"); args[0]
   Binary,        // text is the operator; args[0] op args[1]
   Ternary,       // args[0] ? args[1] : args[2]
   Call,          // text(args...): a built-in function

@@ -11,17 +11,17 @@ namespace {
 constexpr std::string_view kCommandWords[] = {
     "Abort", "AdaptMesh", "Affine", "BSpline", "Background", "Bezier", "Block", "BooleanDifference",
     "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
-    "Chamfer", "Characteristic", "Circle", "ClassifySurfaces", "Closest", "Coherence", "Cohomology",
+    "CatmullRom", "Chamfer", "Characteristic", "Circle", "ClassifySurfaces", "Closest", "Coherence", "Cohomology",
     "Color", "CombinedBoundary", "Compound", "Cone", "CreateGeometry", "CreateTopology", "Curve",
-    "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Error", "Exit",
-    "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide",
+    "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Ellipsis", "Error", "Exit",
+    "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide", "Hole",
     "Homology", "Include", "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm",
-    "MeshSize", "NewModel", "NonBlockingSystem", "NonBlockingSystemCall", "OptimizeMesh", "PartitionMesh", "Periodic",
-    "Physical", "Physicals", "Plane", "Point", "PointsOf", "PostProcessing", "Print", "Printf",
+    "MeshSize", "NewModel", "NonBlockingSystem", "NonBlockingSystemCall", "Nurbs", "OptimizeMesh", "PartitionMesh", "Periodic",
+    "Physical", "Physicals", "Plane", "Point", "PointsOf", "PolarSphere", "PostProcessing", "Print", "Printf",
     "QuadTriAddVerts", "QuadTriNoNewVerts", "Recombine", "Rectangle", "Recursive", "RefineMesh",
     "RelocateMesh", "RenumberMeshElements", "RenumberMeshNodes", "ReorientMesh", "Reverse",
     "Rotate", "Ruled", "Save", "SetChanged", "SetFactory", "SetNumber", "SetOrder", "SetString",
-    "ShapeFromFile", "Show", "Sleep", "Smoother", "Solver", "Sphere", "Spline", "Surface",
+    "ShapeFromFile", "Show", "Sleep", "Smoother", "Solver", "Sphere", "Spline", "Split", "Surface",
     "Symmetry", "SyncModel", "System", "SystemCall", "ThruSections", "Torus", "Transfinite", "Translate", "View",
     "Volume", "Warning", "Wedge", "Wire",
 };
@@ -29,7 +29,8 @@ constexpr std::string_view kCommandWords[] = {
 // Words that only appear after a shape: Point{1} In Surface{2}; ... Using Progression 2;
 constexpr std::string_view kTailWords[] = {
     "Alternate", "AlternateLeft", "AlternateRight", "Alternated", "Beta",
-    "Bump",      "Left",          "Progression",    "Right",      "Using",
+    "Bump",      "Knots",         "Left",           "Order",      "Power",      "Progression",
+    "Right",     "Using",
 };
 
 // Attribute names inside DefineConstant[...] / DefineNumber[...] / DefineString[...].
@@ -44,8 +45,8 @@ constexpr std::string_view kFunctionNames[] = {
     "AbsolutePath", "Abs", "Acos", "Acosh", "ArcCos", "ArcSin", "ArcTan", "ArcTan2", "Asin",
     "Asinh", "Atan", "Atan2", "Atanh", "Ceil", "Cos", "Cosh", "DimNameSpace", "DirName", "Exists",
     "Exp", "Fabs", "FileExists", "Find", "Floor", "Fmod", "GetEnv", "GetForced", "GetNumber",
-    "GetString", "GetValue", "Hypot", "LinSpace", "ListFromFile", "Log", "Log10", "LogSpace",
-    "LowerCase", "Max", "Min", "Modulo", "NameStruct", "NameToString", "Rand", "Round", "S2N",
+    "GetString", "GetStringValue", "GetValue", "Hypot", "LinSpace", "ListFromFile", "Log", "Log10", "LogSpace",
+    "LowerCase", "LowerCaseIn", "Max", "Min", "Modulo", "NameStruct", "NameToString", "Rand", "Round", "S2N",
     "Sin", "Sign", "Sinh",  // Sin first: the likelier meaning of a misspelled "Sinn"
     "Sprintf", "Sqrt", "Step", "Str", "StrCat", "StrChoice", "StrCmp", "StrFind", "StrLen",
     "StrPrefix", "StrRelative", "StrReplace", "StrSub", "Tan", "Tanh", "Unique", "UpperCase",

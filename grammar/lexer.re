@@ -100,12 +100,17 @@ Parser::symbol_type Lexer::word(std::string text, const Parser::location_type& w
   if (text == "Call") return Parser::make_CALL(where);
   if (text == "Plugin") return Parser::make_PLUGIN(where);
   if (text == "Struct") return Parser::make_STRUCT(where);
+  // Their own tokens: two shapes follow each (Split Curve{1} Point{2}).
+  if (text == "Split") return Parser::make_SPLIT(where);
+  if (text == "Intersect") return Parser::make_INTERSECT(where);
   if (text == "DefineConstant" || text == "DefineNumber" || text == "DefineString") {
     defineAhead_ = true;
     if (text == "DefineConstant") return Parser::make_DEFINECONSTANT(where);
     if (text == "DefineNumber") return Parser::make_DEFINENUMBER(where);
     return Parser::make_DEFINESTRING(where);
   }
+  // Circle(1) = {2, 1, 3} Plane{0, 0, 1}: there Plane only follows a definition.
+  if (text == "Plane" && nextNonSpaceIs('{')) return Parser::make_TAILWORD(std::move(text), where);
   if (contains(commandWords(), text)) return Parser::make_WORD(std::move(text), where);
   if (text == "Using" && followedByWord("Wire")) return Parser::make_USINGWIRE(where);
   if (contains(tailWords(), text)) return Parser::make_TAILWORD(std::move(text), where);
@@ -220,6 +225,7 @@ Parser::symbol_type Lexer::scan() {
       "/=" { return Parser::make_DIVEQ(tokenLocation()); }
       ">>" { return Parser::make_APPEND(tokenLocation()); }
       "::" { return Parser::make_SCOPE(tokenLocation()); }
+      "..." { return Parser::make_DOTS(tokenLocation()); }
       [-+*/%^()[\]{},;=<>!?:.#~] {
         return punctuation(static_cast<unsigned char>(*token_), tokenLocation());
       }

@@ -103,6 +103,21 @@ StmtPtr shapeCommand(ExprPtr shape, const Parser::location_type& where) {
   return makeStmt(std::move(command), where);
 }
 
+bool selectsEverything(const std::vector<std::string>& words, const Expr& bare) {
+  if (words.size() < 2 || bare.kind != ExprKind::String || bare.text != "*") return false;
+  const std::string& kind = words.back();
+  return kind == "Point" || kind == "Line" || kind == "Curve" || kind == "Surface" ||
+         kind == "Volume";
+}
+
+ExprPtr everything(std::vector<std::string> words, const Parser::location_type& where) {
+  auto shape = makeExpr(ExprKind::Shape, where);
+  shape->words = std::move(words);
+  shape->parts.emplace_back();
+  shape->parts.back().items.push_back(makeExpr(ExprKind::All, where));
+  return shape;
+}
+
 StmtPtr forStmt(Name variable, ExprPtr range, StmtList body, const Parser::location_type& where) {
   return makeStmt(ForStmt{std::move(variable), std::move(range), std::move(body)}, where);
 }

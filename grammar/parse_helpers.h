@@ -38,6 +38,10 @@ ast::ExprPtr indexInNamespace(ast::Name function, std::string space, ast::ExprPt
                               const Parser::location_type& where);
 
 ast::StmtPtr shapeCommand(ast::ExprPtr shape, const Parser::location_type& where);
+// Whether `words "*"` selects every entity of a kind (Recombine Surface "*"), and that
+// selection as the shape words{:}.
+bool selectsEverything(const std::vector<std::string>& words, const ast::Expr& bare);
+ast::ExprPtr everything(std::vector<std::string> words, const Parser::location_type& where);
 ast::StmtPtr forStmt(ast::Name variable, ast::ExprPtr range, ast::StmtList body,
                      const Parser::location_type& where);
 

@@ -39,7 +39,7 @@ using geomesh::grammar::unary;
 %token <std::string> TAILWORD "modifier" ATTR "attribute"
 %token FOR "For" ENDFOR "EndFor" IN "In" IF "If" ELSEIF "ElseIf" ELSE "Else" ENDIF "EndIf"
 %token MACRO "Macro" RETURN "Return" CALL "Call" PLUGIN "Plugin" USINGWIRE "Using Wire"
-%token STRUCT "Struct" SCOPE "::"
+%token STRUCT "Struct" SCOPE "::" DOTS "..." SPLIT "Split" INTERSECT "Intersect"
 %token DEFINECONSTANT "DefineConstant" DEFINENUMBER "DefineNumber" DEFINESTRING "DefineString"
 %token EQ "==" NE "!=" LE "<=" GE ">=" AND "&&" OR "||" INCR "++" DECR "--"
 %token PLUSEQ "+=" MINUSEQ "-=" TIMESEQ "*=" DIVEQ "/=" APPEND ">>"
@@ -187,8 +187,21 @@ words:
 command:
   words ';' { CommandStmt c; c.words = std::move($1); $$ = makeStmt(std::move(c), @1); }
 | words bare ';' {
-    CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
-    c.args.push_back(std::move($2)); $$ = makeStmt(std::move(c), @1); }
+    if (grammar::selectsEverything($1, *$2)) {  // Recombine Surface "*";
+      $$ = grammar::shapeCommand(grammar::everything(std::move($1), @1), @1);
+    } else {
+      CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
+      c.args.push_back(std::move($2)); $$ = makeStmt(std::move(c), @1);
+    } }
+| words STRING '=' expr ';' {  // Transfinite Curve "*" = 10;
+    if ($2 != "*") throw SyntaxError(at(@2), "only \"*\" (every entity) may stand here");
+    $$ = grammar::shapeCommand(grammar::everything(std::move($1), @1), @1);
+    auto& c = std::get<CommandStmt>($$->node); c.op = "="; c.value = std::move($4); }
+| words STRING '=' expr tail ';' {
+    if ($2 != "*") throw SyntaxError(at(@2), "only \"*\" (every entity) may stand here");
+    $$ = grammar::shapeCommand(grammar::everything(std::move($1), @1), @1);
+    auto& c = std::get<CommandStmt>($$->node); c.op = "="; c.value = std::move($4);
+    c.tail = std::move($5); }
 | words '(' args_opt ')' ';' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
     c.args = std::move($3); $$ = makeStmt(std::move(c), @1); }
@@ -252,6 +265,10 @@ command:
     auto wire = makeExpr(ExprKind::Shape, @2); wire->words = {"Wire"};
     wire->parts.push_back(std::move($3));
     std::get<CommandStmt>($$->node).tail.push_back(TailItem{"Using", std::move(wire)}); }
+| SPLIT shape shape ';' {  // Split Curve{1} Point{2};
+    $2->words.insert($2->words.begin(), "Split");
+    $$ = grammar::shapeCommand(std::move($2), @1);
+    std::get<CommandStmt>($$->node).tail.push_back(TailItem{"", std::move($3)}); }
 | shape tail ';' {
     $$ = grammar::shapeCommand(std::move($1), @1);
     std::get<CommandStmt>($$->node).tail = std::move($2); }
@@ -400,6 +417,9 @@ item:
 | expr ':' expr ':' expr {
     $$ = makeExpr(ExprKind::Range, @1); $$->args.push_back(std::move($1));
     $$->args.push_back(std::move($3)); $$->args.push_back(std::move($5)); }
+| expr DOTS expr {  // the old spelling of a range: {1 ... 3} is {1:3}
+    $$ = makeExpr(ExprKind::Range, @1);
+    $$->args.push_back(std::move($1)); $$->args.push_back(std::move($3)); }
 | ':' { $$ = makeExpr(ExprKind::All, @1); }
 ;
 
@@ -424,6 +444,12 @@ expr:
 | '-' expr %prec UNARY { $$ = unary("-", std::move($2), @1); }
 | '+' expr %prec UNARY { $$ = unary("+", std::move($2), @1); }
 | '!' expr { $$ = unary("!", std::move($2), @1); }
+| name INCR {  // b = a++; the value before the increment
+    auto variable = makeExpr(ExprKind::Variable, @1); variable->name = std::move($1);
+    $$ = unary("post++", std::move(variable), @2); }
+| name DECR {
+    auto variable = makeExpr(ExprKind::Variable, @1); variable->name = std::move($1);
+    $$ = unary("post--", std::move(variable), @2); }
 | primary { $$ = std::move($1); }
 ;
 
@@ -467,6 +493,13 @@ primary:
 | shape USINGWIRE part {
     // out[] = Extrude{ Surface{1}; } Using Wire{2}; the wire's braces become the last part.
     $$ = std::move($1); $$->words.push_back("Using Wire"); $$->parts.push_back(std::move($3)); }
+| INTERSECT shape shape {  // Intersect Curve{1} Surface{2}: words Intersect Curve Surface
+    $$ = std::move($2); $$->words.insert($$->words.begin(), "Intersect"); $$->loc = at(@1);
+    for (auto& word : $3->words) $$->words.push_back(word);
+    for (auto& part : $3->parts) $$->parts.push_back(std::move(part)); }
+| words STRING {  // Surface "*": every surface, as Surface{:}
+    $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1); $$->text = std::move($2);
+    $$->parts.emplace_back(); $$->parts.back().items.push_back(makeExpr(ExprKind::All, @2)); }
 | words '(' args_opt ')' {
     $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);
     $$->parts.emplace_back(); $$->parts.back().items = std::move($3); }

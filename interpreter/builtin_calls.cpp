@@ -174,6 +174,8 @@ std::span<const ScriptFunction> Interpreter::queryFunctions() {
        }},
       {"GetValue", 2, 2, "GetValue takes a prompt and a default value",
        [](Interpreter& in, Call call) { return in.getValue(call); }},
+      {"GetStringValue", 2, 2, "GetStringValue takes a prompt and a default string",
+       [](Interpreter& in, Call call) { return in.getValue(call); }},
   };
   return kRows;
 }
@@ -192,16 +194,43 @@ Value Interpreter::exists(const ast::Expr& call) {
   return structName ? *value : Value::number(1);
 }
 
-// A question for an interactive user: in a batch run, the prompt is shown and the default is
-// the answer.
+// A question for an interactive user (GetValue: a number, GetStringValue: a string): in a
+// batch run, the prompt is shown and the default is the answer.
 Value Interpreter::getValue(const ast::Expr& call) {
   const std::string prompt = evaluateString(*call.args[0]);
-  const double answer = evaluateNumber(*call.args[1]);
+  const bool text = call.text == "GetStringValue";
+  const Value answer = text ? Value::string(evaluateString(*call.args[1]))
+                            : Value::number(evaluateNumber(*call.args[1]));
   if (session_.options().number("General.Verbosity") >= 3) {
-    const std::vector<FormatArgument> shown{answer};
-    session_.out() << prompt << " (default=" << formatPrintf("%g", shown) << "): ";
+    const std::vector<FormatArgument> shown{text ? 0.0 : answer.numbers()[0]};
+    session_.out() << prompt << " (default="
+                   << (text ? answer.strings()[0] : formatPrintf("%g", shown)) << "): ";
   }
-  return Value::number(answer);
+  return answer;
+}
+
+// The string constants: Today (the date as "Tue Nov 24 05:27:03 2026"), the running program,
+// the directory (with its final slash) and name of the script being read, OnelabAction
+// (empty: no ONELAB server drives a batch run).
+std::optional<Value> Interpreter::textConstant(std::string_view name, const SourceLocation& where) {
+  if (name == "Today") {
+    const std::time_t now = std::time(nullptr);
+    char text[64] = "";
+    std::strftime(text, sizeof text, "%a %b %e %H:%M:%S %Y", std::localtime(&now));
+    return Value::string(text);
+  }
+  if (name == "GmshExecutableName") return Value::string("geomesh");
+  if (name == "CurrentDirectory" || name == "CurrentDir") {
+    std::error_code ignored;
+    const auto directory = std::filesystem::absolute(directoryOf(where.file), ignored);
+    std::string text = directory.lexically_normal().string();
+    if (text.empty() || text.back() != '/') text += '/';
+    return Value::string(text);
+  }
+  if (name == "CurrentFileName")
+    return Value::string(std::filesystem::path(where.file).filename().string());
+  if (name == "OnelabAction") return Value::string("");
+  return std::nullopt;
 }
 
 std::optional<Value> Interpreter::builtinConstant(std::string_view name) {

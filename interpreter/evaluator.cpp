@@ -102,6 +102,7 @@ Value Interpreter::variableValue(const Expr& expr) {
   auto it = variables_.find(name);
   if (it != variables_.end()) return it->second;
   if (auto constant = builtinConstant(name)) return *constant;
+  if (auto constant = textConstant(name, expr.loc)) return *constant;
   // A Struct of the global namespace stands for its tag.
   if (auto global = structSpaces_.find(""); global != structSpaces_.end())
     if (auto it = global->second.structs.find(name); it != global->second.structs.end())

@@ -7,6 +7,7 @@
 #include "interpreter/script_interpreter.h"
 #include "api/session.h"
 #include "kernel/geometry_error.h"
+#include "stdlib/format.h"
 
 namespace geomesh {
 
@@ -50,9 +51,22 @@ int Interpreter::entityTag(const ast::CommandStmt& command, const SourceLocation
   if (command.args.size() != 1)
     fail(where, "'" + joined(command.words) + "' takes one tag in parentheses");
   const double tag = evaluateNumber(*command.args[0]);
-  if (tag != std::floor(tag) || tag <= 0)
-    fail(command.args[0]->loc, "tag of '" + joined(command.words) + "' must be a positive integer");
-  return clampedInteger<int>(tag);
+  if (tag != std::floor(tag))
+    fail(command.args[0]->loc, "tag of '" + joined(command.words) + "' must be an integer");
+  if (tag >= 0) return clampedInteger<int>(tag);
+  // As in Gmsh: a negative tag is the next free one, or for a physical group its opposite.
+  if (command.words[0] == "Physical") return clampedInteger<int>(-tag);
+  return session_.factory().maxTag(tagKind(command.words)) + 1;
+}
+
+// The numbering a definition's tag belongs to: a dimension, or one of the two kinds of loops.
+int Interpreter::tagKind(const std::vector<std::string>& words) {
+  if (words.size() == 2 && words[1] == "Loop")
+    return words[0] == "Surface" ? GeometryFactory::kSurfaceLoop : GeometryFactory::kCurveLoop;
+  if (words.back() == "Point") return 0;
+  if (words.back() == "Surface" || words.back() == "Sphere") return 2;
+  if (words.back() == "Volume") return 3;
+  return 1;
 }
 
 // Line(t) = {..}; and the other entities given by their tag and a list of tags: Curve Loop,
@@ -85,6 +99,14 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
   const std::vector<int> tags = entityTags(value);
+  if (w.size() == 1 && isCurveThroughPoints(w[0])) {
+    try {
+      defineCurveThroughPoints(command, tag, tags);
+    } catch (const GeometryError& error) {
+      fail(where, error.what());
+    }
+    return session_.recordOrigin({1, tag}, where);
+  }
   const std::vector<int> through = fillingPoints(command, where);
   GeometryFactory& geo = session_.factory();
   auto requireCount = [&](std::size_t count, const char* what) {
@@ -93,19 +115,7 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
                           " values");
   };
   try {
-    if (w == Words{"Line"}) {
-      requireCount(2, "2 points");
-      geo.addLine(tag, tags[0], tags[1]);
-    } else if (w == Words{"Ellipse"}) {
-      requireCount(4, "{start, center, major axis point, end}");
-      geo.addEllipseArc(tag, tags[0], tags[1], tags[2], tags[3]);
-    } else if (w == Words{"Spline"}) {
-      geo.addSpline(tag, tags);
-    } else if (w == Words{"BSpline"}) {
-      geo.addBSpline(tag, tags);
-    } else if (w == Words{"Bezier"}) {
-      geo.addBezier(tag, tags);
-    } else if (w.size() == 2 && w[1] == "Loop") {
+    if (w.size() == 2 && w[1] == "Loop") {
       if (w[0] == "Surface")
         geo.addSurfaceLoop(tag, tags);
       else
@@ -116,6 +126,7 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
         solids->addCurveFilling(tag, tags[0], w[0] == "Bezier");
     } else if (w == Words{"Plane", "Surface"}) {
       geo.addPlaneSurface(tag, tags);
+      warnIfNearlyPlane(tag, where);
     } else if (w.back() == "Surface") {
       geo.addFillingSurface(tag, tags, through);
     } else {
@@ -128,6 +139,16 @@ void Interpreter::defineEntity(const ast::CommandStmt& command, const SourceLoca
     const int dim = w.back() == "Surface" ? 2 : w.back() == "Volume" ? 3 : 1;
     session_.recordOrigin({dim, tag}, where);
   }
+}
+
+// A plane surface whose loops are a little off their mean plane is meshed on that plane.
+void Interpreter::warnIfNearlyPlane(int tag, const SourceLocation& where) {
+  const double deviation = session_.factory().planeDeviation(tag);
+  if (deviation == 0) return;
+  const std::vector<FormatArgument> shown{deviation};
+  warn(where, "Plane Surface " + std::to_string(tag) + ": its loops are not exactly plane (up to " +
+                  formatPrintf("%g", shown) +
+                  " off their mean plane); meshed on that plane");
 }
 
 void Interpreter::definePoint(const ast::CommandStmt& command, const SourceLocation& where) {
@@ -192,9 +213,14 @@ void Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceL
   if (defineConic(command, where)) return;  // OpenCASCADE's {x, y, z, r <, a1, a2>}
   const int tag = entityTag(command, where);
   if (evaluateNumbers(*command.value).size() != 3) return unsupportedStatement(command, where);
-  const std::vector<int> points = entityTags(*command.value);
+  std::vector<int> points = entityTags(*command.value);
+  for (int& p : points) p = std::abs(p);
+  const std::optional<Vec3> normal = circlePlaneNormal(command);
   try {
-    session_.factory().addCircleArc(tag, points[0], points[1], points[2]);
+    if (normal)
+      session_.factory().addCircleArcAbout(tag, points[0], points[1], points[2], *normal);
+    else
+      session_.factory().addCircleArc(tag, points[0], points[1], points[2]);
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -225,7 +251,7 @@ void Interpreter::definePhysical(const ast::CommandStmt& command, int dim,
   } else {
     tag = entityTag(command, where);
   }
-  if (tag <= 0) fail(where, "physical tag must be a positive integer");
+  tag = std::abs(tag);  // Physical Point(-5) is group 5, as in Gmsh
   std::vector<int> entities = entityTags(*command.value);
   try {
     if (command.op == "-=")

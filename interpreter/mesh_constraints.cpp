@@ -18,7 +18,8 @@ namespace geomesh {
 namespace {
 
 std::optional<TransfiniteCurve::Law> lawNamed(const std::string& word) {
-  if (word == "Progression") return TransfiniteCurve::Law::Progression;
+  // Power: the older name of Progression.
+  if (word == "Progression" || word == "Power") return TransfiniteCurve::Law::Progression;
   if (word == "Bump") return TransfiniteCurve::Law::Bump;
   if (word == "Beta") return TransfiniteCurve::Law::Beta;
   return std::nullopt;

@@ -35,6 +35,15 @@ double comparison(const std::string& op, double a, double b) {
 
 Value Interpreter::unaryValue(const ast::Expr& expr) {
   if (expr.text == "!") return Value::number(evaluateNumber(*expr.args[0]) == 0 ? 1 : 0);
+  if (expr.text == "post++" || expr.text == "post--") {  // a++ in an expression
+    const std::string name = resolveName(expr.args[0]->name);
+    Value& variable = requireVariable(name, expr.loc);
+    if (!variable.isNumeric())
+      fail(expr.loc, "'" + name + "' is " + variable.describe() + ", not a number");
+    const Value before = variable;
+    for (double& x : variable.numbers()) x += expr.text == "post++" ? 1 : -1;
+    return before;
+  }
   Value value = evaluate(*expr.args[0]);
   if (!value.isNumeric())
     fail(expr.loc, "'" + expr.text + "' needs a number, not " + value.describe());

@@ -99,6 +99,7 @@ class Interpreter {
   Value getValue(const ast::Expr& call);
   Value nameOfStruct(const ast::Expr& call);
   std::optional<Value> builtinConstant(std::string_view name);
+  std::optional<Value> textConstant(std::string_view name, const SourceLocation& where);
   std::string format(const ast::ExprList& args, const SourceLocation& where);
 
   // commands: executeCommand finds the statement's handler in the statement table
@@ -157,6 +158,20 @@ class Interpreter {
   void executePhysical(const ast::CommandStmt& command, const SourceLocation& where);
   void definePhysical(const ast::CommandStmt& command, int dim, const SourceLocation& where);
   int entityTag(const ast::CommandStmt& command, const SourceLocation& where);
+  static int tagKind(const std::vector<std::string>& words);
+  static bool isCurveThroughPoints(const std::string& word);
+  std::optional<Vec3> circlePlaneNormal(const ast::CommandStmt& command);
+  void executePeriodicByTranslation(const ast::CommandStmt& command, const SourceLocation& where);
+  Value intersectCurvesWithSurface(const ast::Expr& expr);
+  void executeCoherencePoints(const ast::CommandStmt& command, const SourceLocation& where);
+  void rejectReservedWord(const ast::CommandStmt& command, const SourceLocation& where);
+  void rejectOlderForms(const std::vector<std::string>& words, bool braces,
+                        const SourceLocation& where);
+  void definePolarSphere(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeSplitCurve(const ast::CommandStmt& command, const SourceLocation& where);
+  void warnIfNearlyPlane(int tag, const SourceLocation& where);
+  void defineCurveThroughPoints(const ast::CommandStmt& command, int tag, std::vector<int> points);
+  void defineNurbs(const ast::CommandStmt& command, int tag, const std::vector<int>& points);
   std::vector<int> entityTags(const ast::Expr& list);
   std::vector<int> fillingPoints(const ast::CommandStmt& command, const SourceLocation& where);
   void optionChanged(const std::string& name);

@@ -216,12 +216,56 @@ void Interpreter::executePeriodic(const ast::CommandStmt& command, const SourceL
   const bool transformed = command.shape && command.value && command.tail.size() == 1 &&
                            command.tail[0].word.empty() && command.tail[0].value &&
                            isTransform(command.tail[0].value->words.at(0));
-  if (!transformed) return unsupportedStatement(command, where);
   const int dim = entityDimension({command.words[1]});
+  const bool bare = command.shape && command.value && command.tail.empty() && dim == 1;
+  if (bare) return executePeriodicByTranslation(command, where);
+  if (!transformed) return unsupportedStatement(command, where);
   try {
     session_.factory().setPeriodic(dim, shapeTags(*command.shape, dim),
                                    entityTags(*command.value),
                                    transformMap(*command.tail[0].value));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Periodic Curve{slaves} = {masters}; (the older form, without a transform): the slaves must be
+// the masters moved by one translation, which the curves' ends give.
+void Interpreter::executePeriodicByTranslation(const ast::CommandStmt& command,
+                                               const SourceLocation& where) {
+  GeometryFactory& geo = session_.factory();
+  const std::vector<int> slaves = shapeTags(*command.shape, 1);
+  const std::vector<int> masters = entityTags(*command.value);
+  try {
+    if (slaves.size() != masters.size() || slaves.empty())
+      throw GeometryError("Periodic: " + std::to_string(slaves.size()) +
+                          " curves cannot match " + std::to_string(masters.size()));
+    std::optional<Vec3> shift;
+    for (std::size_t i = 0; i < slaves.size(); ++i) {
+      const auto s = geo.boundary({{1, slaves[i]}}, false);
+      const auto m = geo.boundary({{1, masters[i]}}, false);
+      for (std::size_t end = 0; end < 2 && end < s.size() && end < m.size(); ++end) {
+        const Vec3 d = geo.pointCoordinates(s[end].tag) - geo.pointCoordinates(m[end].tag);
+        if (!shift) shift = d;
+        if (distance(*shift, d) > 1e-6 * (1 + norm(d)))
+          fail(where, "Periodic Curve: curve " + std::to_string(slaves[i]) +
+                          " is not a translate of curve " + std::to_string(masters[i]) +
+                          "; give the transform: Periodic Curve{..} = {..} Rotate{..} or "
+                          "Translate{..}");
+      }
+    }
+    geo.setPeriodic(1, slaves, masters, AffineMap::translation(shift.value_or(Vec3{})));
+  } catch (const GeometryError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Coherence Point{a, b, ..}; merges the points into the first, wherever they are.
+void Interpreter::executeCoherencePoints(const ast::CommandStmt& command,
+                                         const SourceLocation& where) {
+  if (!command.shape || command.value) return unsupportedStatement(command, where);
+  try {
+    session_.factory().coherePoints(shapeTags(*command.shape, 0));
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
@@ -298,8 +342,32 @@ Value Interpreter::physicalQuery(const ast::Expr& expr, int dim) {
   return Value::list(std::move(result));
 }
 
+// Intersect Curve{curves} Surface{surface}: the tags of new points where the curves cross it.
+Value Interpreter::intersectCurvesWithSurface(const ast::Expr& expr) {
+  if (expr.parts.size() != 2) fail(expr.loc, "expected Intersect Curve{..} Surface{tag}");
+  std::vector<int> curves;
+  for (double t : evaluateNumbers(expr.parts[0].items)) curves.push_back(clampedInteger<int>(t));
+  const std::vector<double> surfaces = evaluateNumbers(expr.parts[1].items);
+  if (surfaces.size() != 1) fail(expr.loc, "Intersect takes one surface, not " +
+                                               std::to_string(surfaces.size()));
+  try {
+    return Value::list(asDoubles(
+        session_.factory().intersectCurvesWithSurface(curves, clampedInteger<int>(surfaces[0]))));
+  } catch (const GeometryError& error) {
+    fail(expr.loc, error.what());
+  }
+}
+
 Value Interpreter::shapeValue(const ast::Expr& expr) {
   const Words& w = expr.words;
+  // Surface "*" is Surface{:}; a physical group takes no other string (a group of that name is
+  // selected by Physical Surface{tag} only).
+  if (!expr.text.empty() && !w.empty() && w[0] == "Physical" && expr.text != "*")
+    fail(expr.loc, "'" + w[0] + " " + w.back() + " \"" + expr.text +
+                       "\"': only \"*\" (every group) may follow; use {tags} to select groups");
+  rejectOlderForms(w, false, expr.loc);
+  if (w == Words{"Intersect", "Curve", "Surface"} || w == Words{"Intersect", "Line", "Surface"})
+    return intersectCurvesWithSurface(expr);
   // Point{n} is the point's coordinates, but Point{:} the tags of all points, as in Gmsh.
   const bool allPoints = expr.parts.size() == 1 && expr.parts[0].items.size() == 1 &&
                          expr.parts[0].items[0]->kind == ast::ExprKind::All;

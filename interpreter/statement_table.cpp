@@ -61,12 +61,14 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Boundary", &Interpreter::executeShapeOperation},
       {"BoundingBox ...", &Interpreter::skipInBatch},
       {"Box", &Interpreter::defineBox},
+      {"CatmullRom", &Interpreter::defineEntity},
       {"Chamfer", &Interpreter::executeRounding},
       {"Characteristic Length", &Interpreter::executeMeshSize},
       {"Circle", &Interpreter::defineCircleArc},
       {"ClassifySurfaces ...", &Interpreter::unsupportedStatement},
       {"Coherence", &Interpreter::executeCoherence},
       {"Coherence Mesh", &Interpreter::executeCoherenceMesh},
+      {"Coherence Point", &Interpreter::executeCoherencePoints},
       {"Cohomology ...", &Interpreter::unsupportedStatement},
       {"Color ...", &Interpreter::skipInBatch},
       {"CombinedBoundary", &Interpreter::executeShapeOperation},
@@ -87,6 +89,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Draw ...", &Interpreter::skipInBatch},
       {"Duplicata", &Interpreter::executeShapeOperation},
       {"Ellipse", &Interpreter::defineEllipse},
+      {"Ellipsis", &Interpreter::defineEntity},
       {"Error ...", &Interpreter::executeMessage},
       {"Exit ...", &Interpreter::exitScript},
       {"Extrude", &Interpreter::executeShapeOperation},
@@ -94,6 +97,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Fillet", &Interpreter::executeRounding},
       {"HealShapes", &Interpreter::executeHealShapes},
       {"Hide ...", &Interpreter::skipInBatch},
+      {"Hole ...", &Interpreter::rejectReservedWord},
       {"Homology ...", &Interpreter::unsupportedStatement},
       {"Include", &Interpreter::executeInclude},
       {"Line", &Interpreter::defineEntity},
@@ -105,6 +109,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"NewModel", &Interpreter::executeNewModel},
       {"NonBlockingSystem ...", &Interpreter::executeSystemCall},
       {"NonBlockingSystemCall ...", &Interpreter::executeSystemCall},
+      {"Nurbs", &Interpreter::defineEntity},
       {"OptimizeMesh ...", &Interpreter::unsupportedStatement},
       {"PartitionMesh ...", &Interpreter::unsupportedStatement},
       {"Periodic Curve", &Interpreter::executePeriodic},
@@ -118,6 +123,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Physical Volume", &Interpreter::executePhysical},
       {"Plane Surface", &Interpreter::defineEntity},
       {"Point", &Interpreter::definePoint},
+      {"PolarSphere", &Interpreter::definePolarSphere},
       {"PostProcessing ...", &Interpreter::skipInBatch},
       {"Print", &Interpreter::executePrint},
       {"Print ...", &Interpreter::skipInBatch},
@@ -146,6 +152,8 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Solver ...", &Interpreter::skipInBatch},
       {"Sphere", &Interpreter::definePrimitive},
       {"Spline", &Interpreter::defineEntity},
+      {"Split Curve", &Interpreter::executeSplitCurve},
+      {"Split Line", &Interpreter::executeSplitCurve},
       {"Struct", &Interpreter::executeStructStatement},
       {"Surface", &Interpreter::defineEntity},
 
@@ -182,6 +190,7 @@ const Interpreter::StatementRow* Interpreter::findStatement(const std::vector<st
 }
 
 void Interpreter::executeCommand(const ast::CommandStmt& command, const SourceLocation& where) {
+  rejectOlderForms(command.words, command.shape != nullptr, where);
   if (const StatementRow* row = findStatement(command.words))
     return (this->*row->handler)(command, where);
   unsupportedStatement(command, where);
@@ -195,6 +204,33 @@ std::vector<std::string_view> Interpreter::statementPatterns() {
 
 std::span<const std::string_view> Interpreter::keywordsStartingNoStatement() {
   return kNoStatement;
+}
+
+// Forms of Gmsh 1 and 2 that Gmsh 4 rejects: each is an error naming the form to write.
+void Interpreter::rejectOlderForms(const std::vector<std::string>& words, bool braces,
+                                   const SourceLocation& where) {
+  if (words.size() == 3 && words[0] == "Delete" && words[1] == "Physical")
+    fail(where, "'Delete Physical " + words[2] + "{..}' is not a statement; write Physical " +
+                    words[2] + "(tag) -= {..}; or Delete Physicals;");
+  if (words.size() != 2) return;
+  const std::string& kind = words[1];
+  const bool entity = kind == "Point" || kind == "Line" || kind == "Curve" || kind == "Surface" ||
+                      kind == "Volume";
+  if (words[0] == "Extrude" && entity)
+    fail(where, "'Extrude " + kind + " {tag, {dx, dy, dz}}' is an older form that is no longer "
+                "read; write Extrude {dx, dy, dz} { " + kind + "{tag}; }");
+  if (words[0] == "Compound" && entity && !braces)
+    fail(where, "'Compound " + kind + "(tag) = {..}' is an older form that is no longer read; "
+                "write the meshing constraint Compound " + (kind == "Line" ? std::string("Curve") : kind) +
+                "{..};");
+  if (words[0] == "Physical" && entity && braces)
+    fail(where, "a physical group is defined as Physical " + kind + "(tag) = {..}; or Physical " +
+                    kind + "(\"name\") = {..};, not with braces");
+}
+
+// Words Gmsh reserves without any statement of theirs (Hole, from its first versions).
+void Interpreter::rejectReservedWord(const ast::CommandStmt& command, const SourceLocation& where) {
+  fail(where, "'" + command.words[0] + "' is a reserved word that starts no statement");
 }
 
 void Interpreter::unsupportedStatement(const ast::CommandStmt& command,

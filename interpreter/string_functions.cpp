@@ -150,6 +150,11 @@ std::span<const ScriptFunction> Interpreter::stringFunctions() {
        }},
       {"UpperCase", 1, 1, "",
        [](Interpreter& in, Call call) { return Value::string(upperCase(text(in, call, 0))); }},
+      {"LowerCaseIn", 1, 1, "",  // lower case but the first character: "ABC" -> "Abc"
+       [](Interpreter& in, Call call) {
+         std::string s = text(in, call, 0);
+         return Value::string(s.empty() ? s : s.front() + lowerCase(s.substr(1)));
+       }},
       {"LowerCase", 1, 1, "",
        [](Interpreter& in, Call call) { return Value::string(lowerCase(text(in, call, 0))); }},
       {"GetEnv", 1, 1, "",

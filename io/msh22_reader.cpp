@@ -1,4 +1,4 @@
-// MSH 2.2 sections: a flat node list and a flat element list whose elements carry their
+// MSH 2.2 (and 3.0) sections, and the MSH 1.0 ones they grew from: a flat node list and a flat element list whose elements carry their
 // physical group and entity tags. Nodes are classified afterwards, on the lowest-dimensional
 // entity whose elements use them.
 #include <algorithm>
@@ -106,7 +106,9 @@ void classifyNodesAndAddEntities(MshReadState& state) {
 
 }  // namespace
 
-void readMsh22Nodes(MshDecoder& in, MshReadState& state) {
+namespace {
+
+void readNodeList(MshDecoder& in, MshReadState& state, const char* endMarker) {
   const std::uint64_t n = headerCount(in, 4);
   for (std::uint64_t i = 0; i < n; ++i) {
     const int tag = in.integer();
@@ -116,7 +118,34 @@ void readMsh22Nodes(MshDecoder& in, MshReadState& state) {
       in.fail("node " + std::to_string(tag) + " is defined twice");
     state.mesh.addNode({in.real(), in.real(), in.real()});
   }
-  expectSectionEnd(in, "$EndNodes");
+  expectSectionEnd(in, endMarker);
+}
+
+}  // namespace
+
+void readMsh22Nodes(MshDecoder& in, MshReadState& state) { readNodeList(in, state, "$EndNodes"); }
+
+void readMsh1Nodes(MshDecoder& in, MshReadState& state) {
+  if (in.binary()) in.fail("binary MSH 1.0 files do not exist");
+  readNodeList(in, state, "$ENDNOD");
+}
+
+void readMsh1Elements(MshDecoder& in, MshReadState& state) {
+  const std::uint64_t n = headerCount(in, 10);
+  for (std::uint64_t i = 0; i < n; ++i) {
+    in.integer();  // element tag: elements are renumbered
+    const ElementType type = MshReadState::elementType(in, in.integer());
+    ElementHeader header{type};
+    header.physical = in.integer();
+    header.entity = in.integer();
+    const int nodes = in.integer();
+    if (nodes != nodeCount(type))
+      in.fail("an element of type " + std::to_string(static_cast<int>(type)) + " has " +
+              std::to_string(nodeCount(type)) + " nodes, not " + std::to_string(nodes));
+    addElement(in, state, header);
+  }
+  expectSectionEnd(in, "$ENDELM");
+  classifyNodesAndAddEntities(state);
 }
 
 void readMsh22Elements(MshDecoder& in, MshReadState& state) {

@@ -33,6 +33,10 @@ void readMsh41Nodes(MshDecoder& in, MshReadState& state);
 void readMsh41Elements(MshDecoder& in, MshReadState& state);
 void readMsh22Nodes(MshDecoder& in, MshReadState& state);
 void readMsh22Elements(MshDecoder& in, MshReadState& state);
+// MSH 1.0: $NOD (as 2.2's $Nodes) and $ELM (each element: tag, type, physical group,
+// elementary entity, node count, nodes), text only.
+void readMsh1Nodes(MshDecoder& in, MshReadState& state);
+void readMsh1Elements(MshDecoder& in, MshReadState& state);
 // $Periodic: each link is kept in the linked entity's EntityMesh::periodic.
 void readMsh41Periodic(MshDecoder& in, MshReadState& state);
 void readMsh22Periodic(MshDecoder& in, MshReadState& state);

@@ -42,20 +42,22 @@ void expectSectionEnd(MshDecoder& in, const char* marker) {
 
 namespace {
 
-// The $MeshFormat section: returns the major version (2 or 4) and sets the encoding.
-int readMeshFormat(MshDecoder& in) {
-  if (in.atEnd() || in.line() != "$MeshFormat") in.fail("not an MSH file: no $MeshFormat");
+// The $MeshFormat section, whose first line has been read: returns the major version (2 for
+// 2.x and 3.0, whose sections have the same layout, or 4) and sets the encoding.
+int readMeshFormat(MshDecoder& in, std::string_view firstLine) {
+  if (firstLine != "$MeshFormat") in.fail("not an MSH file: no $MeshFormat");
   const std::string_view version = in.token();
   const int fileType = in.integer();
   const int dataSize = in.integer();
   int major = 0;
   if (version == "4.1")
     major = 4;
-  else if (version == "2.2" || version == "2.1" || version == "2" || version == "2.0")
+  else if (version == "2.2" || version == "2.1" || version == "2" || version == "2.0" ||
+           version == "3.0" || version == "3")
     major = 2;
   else
     in.fail("unsupported MSH version " + std::string(version.substr(0, 20)) +
-            " (4.1 and 2.2 are supported)");
+            " (4.1, 3.0, 2.x and 1.0 are supported)");
   if (fileType != 0 && fileType != 1) in.fail("invalid file type " + std::to_string(fileType));
   if (fileType == 1) {
     if (dataSize != 8) in.fail("unsupported data size " + std::to_string(dataSize));
@@ -101,6 +103,9 @@ void readSection(MshDecoder& in, MshReadState& state, int major, std::string_vie
   if (header.size() < 2 || header.front() != '$')
     in.fail("expected a section, found '" + std::string(header.substr(0, 40)) + "'");
   const std::string name(header.substr(1));
+  if (major == 1 && name == "NOD") return readMsh1Nodes(in, state);
+  if (major == 1 && name == "ELM") return readMsh1Elements(in, state);
+  if (major == 1) in.fail("unexpected section $" + name.substr(0, 40) + " in an MSH 1.0 file");
   if (name == "PhysicalNames") return readPhysicalNames(in, state);
   if (major == 4 && name == "Entities") return readMsh41Entities(in, state);
   if (major == 4 && name == "Nodes") return readMsh41Nodes(in, state);
@@ -122,7 +127,11 @@ void readMsh(std::istream& in, Model& model, Mesh& mesh, const std::string& name
   MshDecoder decoder(data, name);
   MshReadState state{model, mesh, {}, {}, {}};
   try {
-    const int major = readMeshFormat(decoder);
+    if (decoder.atEnd()) decoder.fail("not an MSH file: no $MeshFormat");
+    const std::string_view first = decoder.line();
+    // MSH 1.0 has no $MeshFormat: it starts with its nodes.
+    const int major = first == "$NOD" ? 1 : readMeshFormat(decoder, first);
+    if (major == 1) readSection(decoder, state, major, first);
     while (!decoder.atEnd()) readSection(decoder, state, major, decoder.line());
     buildPhysicalGroups(state);
   } catch (const MshReadError&) {

@@ -39,6 +39,32 @@ void FallbackFactory::addBSpline(int tag, const std::vector<int>& points) {
 void FallbackFactory::addBezier(int tag, const std::vector<int>& points) {
   route([&](GeometryFactory& f) { f.addBezier(tag, points); });
 }
+void FallbackFactory::addCircleArcAbout(int tag, int startPoint, int centerPoint, int endPoint,
+                                        Vec3 normal) {
+  route([&](GeometryFactory& f) {
+    f.addCircleArcAbout(tag, startPoint, centerPoint, endPoint, normal);
+  });
+}
+void FallbackFactory::addPolyline(int tag, const std::vector<int>& points) {
+  route([&](GeometryFactory& f) { f.addPolyline(tag, points); });
+}
+void FallbackFactory::addNurbs(int tag, const std::vector<int>& points,
+                               const std::vector<double>& knots, int degree) {
+  route([&](GeometryFactory& f) { f.addNurbs(tag, points, knots, degree); });
+}
+std::vector<int> FallbackFactory::splitCurve(int tag, const std::vector<int>& points) {
+  return route([&](GeometryFactory& f) { return f.splitCurve(tag, points); });
+}
+std::vector<int> FallbackFactory::intersectCurvesWithSurface(const std::vector<int>& curves,
+                                                             int surface) {
+  return route([&](GeometryFactory& f) { return f.intersectCurvesWithSurface(curves, surface); });
+}
+void FallbackFactory::coherePoints(const std::vector<int>& points) {
+  route([&](GeometryFactory& f) { f.coherePoints(points); });
+}
+double FallbackFactory::planeDeviation(int tag) const {
+  return std::max(primary_.planeDeviation(tag), fallback_.planeDeviation(tag));
+}
 void FallbackFactory::addCurveLoop(int tag, std::vector<int> curves) {
   route([&](GeometryFactory& f) { f.addCurveLoop(tag, curves); });
 }

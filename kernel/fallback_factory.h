@@ -32,6 +32,16 @@ class FallbackFactory final : public GeometryFactory {
   void addSpline(int tag, const std::vector<int>& points) override;
   void addBSpline(int tag, const std::vector<int>& points) override;
   void addBezier(int tag, const std::vector<int>& points) override;
+  void addCircleArcAbout(int tag, int startPoint, int centerPoint, int endPoint,
+                         Vec3 normal) override;
+  void addPolyline(int tag, const std::vector<int>& points) override;
+  void addNurbs(int tag, const std::vector<int>& points, const std::vector<double>& knots,
+                int degree) override;
+  std::vector<int> splitCurve(int tag, const std::vector<int>& points) override;
+  double planeDeviation(int tag) const override;
+  void coherePoints(const std::vector<int>& points) override;
+  std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
+                                              int surface) override;
   void addCurveLoop(int tag, std::vector<int> curves) override;
   void addPlaneSurface(int tag, std::vector<int> curveLoops) override;
   void addFillingSurface(int tag, std::vector<int> curveLoops,

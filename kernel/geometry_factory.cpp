@@ -17,6 +17,19 @@ void GeometryFactory::addEllipseArc(int, int, int, int, int) { unsupported("Elli
 void GeometryFactory::addSpline(int, const std::vector<int>&) { unsupported("Spline"); }
 void GeometryFactory::addBSpline(int, const std::vector<int>&) { unsupported("BSpline"); }
 void GeometryFactory::addBezier(int, const std::vector<int>&) { unsupported("Bezier"); }
+void GeometryFactory::addCircleArcAbout(int, int, int, int, Vec3) { unsupported("Circle"); }
+void GeometryFactory::addPolyline(int, const std::vector<int>&) { unsupported("Line"); }
+void GeometryFactory::addNurbs(int, const std::vector<int>&, const std::vector<double>&, int) {
+  unsupported("Nurbs");
+}
+std::vector<int> GeometryFactory::splitCurve(int, const std::vector<int>&) {
+  unsupported("Split Curve");
+}
+double GeometryFactory::planeDeviation(int) const { return 0; }
+void GeometryFactory::coherePoints(const std::vector<int>&) { unsupported("Coherence Point"); }
+std::vector<int> GeometryFactory::intersectCurvesWithSurface(const std::vector<int>&, int) {
+  unsupported("Intersect");
+}
 void GeometryFactory::addCurveLoop(int, std::vector<int>) { unsupported("Curve Loop"); }
 void GeometryFactory::addPlaneSurface(int, std::vector<int>) { unsupported("Plane Surface"); }
 void GeometryFactory::addFillingSurface(int, std::vector<int>, const std::vector<int>&) {

@@ -39,6 +39,27 @@ class GeometryFactory {
   virtual void addSpline(int tag, const std::vector<int>& points);
   virtual void addBSpline(int tag, const std::vector<int>& points);
   virtual void addBezier(int tag, const std::vector<int>& points);
+  // Circle(tag) = {start, center, end} Plane{nx, ny, nz}: the normal says which way a half
+  // circle turns (about it, right-handed); other arcs take the shorter way, as without it.
+  virtual void addCircleArcAbout(int tag, int startPoint, int centerPoint, int endPoint,
+                                 Vec3 normal);
+  // Line(tag) = {p1, p2, p3, ..}: one curve of straight segments through the points.
+  virtual void addPolyline(int tag, const std::vector<int>& points);
+  // Nurbs(tag) = {points} Knots {knots} Order degree: a B-spline curve of these control points
+  // and knots (points.size() + degree + 1 of them, non-decreasing).
+  virtual void addNurbs(int tag, const std::vector<int>& points, const std::vector<double>& knots,
+                        int degree);
+  // Split Curve{tag} Point{..}: the curve becomes the pieces between the given points among
+  // its own, each of the curve's kind, with new tags (returned in order along the curve);
+  // curve loops and surfaces that used it use the pieces instead.
+  virtual std::vector<int> splitCurve(int tag, const std::vector<int>& points);
+  // Intersect Curve{..} Surface{s}: a new point where each curve crosses the surface (curves
+  // stay whole); returns the new points' tags, curve by curve, along each curve.
+  virtual std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
+                                                      int surface);
+  // How far the loops of plane surface `tag` pass from the plane fitted to them (0 when the
+  // surface is not a plane surface of this factory).
+  virtual double planeDeviation(int tag) const;
   virtual void addCurveLoop(int tag, std::vector<int> curves);
   virtual void addPlaneSurface(int tag, std::vector<int> curveLoops);
   // A surface filling the curve loop; an OpenCASCADE filling also passes through the points
@@ -78,6 +99,9 @@ class GeometryFactory {
                                         const ExtrusionMotion& motion,
                                         const ExtrusionLayers& layers);
   virtual void coherence();
+  // Coherence Point{a, b, ..}: the points after the first become the first, wherever they are
+  // used; curves and surfaces made identical by it then merge as in Coherence.
+  virtual void coherePoints(const std::vector<int>& points);
 
   // Queries. maxTag: the largest tag given so far; dim 0..3 for entities, kCurveLoop and
   // kSurfaceLoop for loops; 0 when none.

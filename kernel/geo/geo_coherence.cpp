@@ -109,6 +109,21 @@ class PointGrid {
 }  // namespace
 
 // In ascending tags, each point merges into the lowest earlier point within the tolerance.
+void GeoFactory::coherePoints(const std::vector<int>& points) {
+  for (int p : points) requireShape({0, p}, "Coherence");
+  if (points.empty()) return;
+  const int kept = std::abs(points.front());
+  std::map<int, int> replacement;
+  for (int p : points)
+    if (std::abs(p) != kept) replacement[std::abs(p)] = kept;
+  if (replacement.empty()) return;
+  for (const auto& [from, to] : replacement) points_.erase(from);
+  replaceTags(0, replacement);
+  mergeCurves();
+  mergeSurfaces();
+  resetHighWater();
+}
+
 void GeoFactory::mergePoints() {
   PointGrid grid(absoluteTolerance());
   std::map<int, int> replacement;

@@ -114,7 +114,16 @@ std::vector<std::vector<int>> GeoFactory::surfaceLoopsOf(int tag,
 void GeoFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   requireNew(surfaces_, tag, "Surface");
   auto loops = surfaceLoopsOf(tag, curveLoops, "Plane surface");
-  fitPlaneSurface(tag, loops);  // throws when the loops are not plane
+  // Loops a little off their mean plane are meshed on it (planeDeviation says by how much);
+  // loops far from any plane are an error.
+  const double deviation = fitPlaneSurface(tag, loops).second;
+  BoundingBox box;
+  for (Vec3 xyz : loopSamples(loops.front())) box.include(xyz);
+  const double size = distance(box.min, box.max);
+  if (deviation > absoluteTolerance() && deviation > kPlaneDeviationLimit * size)
+    fail("Plane surface ", tag, " is not plane: its loops pass ", deviation,
+         " away from their mean plane, more than ", 100 * kPlaneDeviationLimit,
+         "% of the outer loop's size ", size);
   surfaces_[tag] = Surface{tag, SurfaceKind::Plane, std::move(loops), std::move(curveLoops)};
   noteTag(2, tag);
 }
@@ -267,12 +276,12 @@ double GeoFactory::absoluteTolerance() const {
 
 std::array<int, 2> GeoFactory::curveEnds(int signedCurve) const {
   const Curve& c = curves_.at(std::abs(signedCurve));
-  return signedCurve > 0 ? std::array{c.start(), c.end()} : std::array{c.end(), c.start()};
+  return signedCurve >= 0 ? std::array{c.start(), c.end()} : std::array{c.end(), c.start()};
 }
 
 std::vector<int> GeoFactory::loopCurves(int signedLoop) const {
   const std::vector<int>& loop = curveLoops_.at(std::abs(signedLoop));
-  return signedLoop > 0 ? loop : geo_detail::reversedChain(loop);
+  return signedLoop >= 0 ? loop : geo_detail::reversedChain(loop);
 }
 
 // A closed shell uses each curve of its surfaces' boundaries exactly twice.

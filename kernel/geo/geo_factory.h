@@ -41,6 +41,22 @@ class GeoFactory final : public GeometryFactory {
   void addBSpline(int tag, const std::vector<int>& points) override;
   // Bezier(tag) = {..}: a Bezier curve of these control points.
   void addBezier(int tag, const std::vector<int>& points) override;
+  void addCircleArcAbout(int tag, int startPoint, int centerPoint, int endPoint,
+                         Vec3 normal) override;
+  void addPolyline(int tag, const std::vector<int>& points) override;
+  void addNurbs(int tag, const std::vector<int>& points, const std::vector<double>& knots,
+                int degree) override;
+  // Splits Spline, BSpline, Bezier and polyline curves (kernel/geo/geo_split.cpp).
+  std::vector<int> splitCurve(int tag, const std::vector<int>& points) override;
+  // Crossings found by sampling each curve's signed distance to the surface and bisecting
+  // where it changes sign (kernel/geo/geo_split.cpp).
+  std::vector<int> intersectCurvesWithSurface(const std::vector<int>& curves,
+                                              int surface) override;
+  // The loops of a plane surface need not be exactly plane: the surface lies on the plane
+  // fitted to them by least squares, and this is the largest distance of the loops from it.
+  double planeDeviation(int tag) const override;
+  // Beyond this fraction of the outer loop's size, the loops of a plane surface are not plane.
+  static constexpr double kPlaneDeviationLimit = 0.05;
   // A closed chain of curves; signed tags (negative: reversed). Curves given in any order
   // and orientation are chained as the built-in kernel does; a loop that does not close
   // throws, naming the gap.
@@ -100,6 +116,7 @@ class GeoFactory final : public GeometryFactory {
   // Coherence: merges points closer than the tolerance (the lowest tag stays), then the
   // curves and surfaces that have become identical.
   void coherence() override;
+  void coherePoints(const std::vector<int>& points) override;
 
   // Extrude{..}{shapes} (kernel/geo/geo_extrude.cpp): for each shape in turn, its top (its
   // image at the end of the motion), the entity swept (one dimension higher), then the
@@ -157,6 +174,9 @@ class GeoFactory final : public GeometryFactory {
     std::vector<int> compound = {};
     std::optional<Periodicity> periodic = std::nullopt;
     std::vector<int> embeddedPoints = {};
+    std::vector<double> knots = {};  // a Nurbs curve's (then a BSpline of this degree)
+    int degree = 0;
+    std::optional<Vec3> normal = std::nullopt;  // a circle arc's, from Plane{..}
     int start() const { return points.front(); }
     int end() const { return points.back(); }
   };
@@ -223,8 +243,10 @@ class GeoFactory final : public GeometryFactory {
   // Points along a chain of signed curves: each curve's start, and inner points of curved ones.
   std::vector<Vec3> loopSamples(const std::vector<int>& curves) const;
   std::vector<int> loopCurves(int signedLoop) const;
-  std::shared_ptr<const SurfaceGeometry> fitPlaneSurface(
+  // The plane surface on the plane fitted to the loops, and how far the loops pass from it.
+  std::pair<std::shared_ptr<const SurfaceGeometry>, double> fitPlaneSurface(
       int tag, const std::vector<std::vector<int>>& loops) const;
+  void replaceCurveInLoops(int tag, const std::vector<int>& pieces);
   void checkShellClosed(int tag, const std::vector<int>& surfaces) const;
 
   // geo_transform.cpp

@@ -21,35 +21,69 @@ std::vector<Vec3> GeoFactory::loopSamples(const std::vector<int>& curves) const 
   for (int c : curves) {
     const Curve& curve = curves_.at(std::abs(c));
     samples.push_back(points_.at(curveEnds(c)[0]).xyz);
-    if (curve.kind == CurveKind::Line) continue;
+    if (curve.kind == CurveKind::Line && curve.points.size() == 2) continue;
     const auto geometry = curveGeometry(curve);
     for (int i = 1; i < kCurveSamples; ++i) {
       const double t = static_cast<double>(i) / kCurveSamples;
-      samples.push_back(geometry->point(c > 0 ? t : 1 - t));
+      samples.push_back(geometry->point(c >= 0 ? t : 1 - t));
     }
   }
   return samples;
 }
 
-// The plane is fitted to the outer loop (its normal follows the loop's orientation, so the
-// loop runs counter-clockwise in the plane's parameters); every loop must lie on it. Curved
-// curves are sampled, so that both the fit and the check see their shape.
-std::shared_ptr<const SurfaceGeometry> GeoFactory::fitPlaneSurface(
+namespace {
+
+// The normal of the plane nearest to the points in the least-squares sense: the eigenvector of
+// their covariance of smallest eigenvalue, found by inverse iteration from `guess` (Newell's
+// normal, whose orientation it keeps). The guess stays when the points are exactly plane.
+Vec3 leastSquaresNormal(const std::vector<Vec3>& xyz, Vec3 centroid, Vec3 guess) {
+  double c[3][3] = {};
+  for (Vec3 p : xyz) {
+    const double d[3] = {p.x - centroid.x, p.y - centroid.y, p.z - centroid.z};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) c[i][j] += d[i] * d[j];
+  }
+  auto column = [&](int j) { return Vec3{c[0][j], c[1][j], c[2][j]}; };
+  const double det = dot(column(0), cross(column(1), column(2)));
+  const double scale = c[0][0] + c[1][1] + c[2][2];
+  if (!(std::abs(det) > 1e-30 * scale * scale * scale)) return guess;
+  Vec3 n = guess;
+  for (int step = 0; step < 20; ++step) {  // n <- C^-1 n by Cramer's rule, normalized
+    const Vec3 a = column(0), b = column(1), e = column(2);
+    const Vec3 next{dot(n, cross(b, e)) / det, dot(a, cross(n, e)) / det,
+                    dot(a, cross(b, n)) / det};
+    n = normalized(next);
+  }
+  return dot(n, guess) < 0 ? -1.0 * n : n;
+}
+
+}  // namespace
+
+// The plane is fitted by least squares to the outer loop (its normal follows the loop's
+// orientation, so that the loop runs counter-clockwise in the plane's parameters). Curved
+// curves are sampled, so that the fit sees their shape. Loops that are only nearly plane
+// are meshed on that plane: the deviation returned says how far they pass from it.
+std::pair<std::shared_ptr<const SurfaceGeometry>, double> GeoFactory::fitPlaneSurface(
     int tag, const std::vector<std::vector<int>>& loops) const {
-  const PlaneFit fit = fitPlane(loopSamples(loops.front()));
+  const std::vector<Vec3> outer = loopSamples(loops.front());
+  const PlaneFit fit = fitPlane(outer);
   if (norm(fit.normal) == 0) fail("Plane surface ", tag, ": its outer loop encloses no area");
-  auto plane = std::make_shared<PlaneGeometry>(fit.origin, fit.normal);
-  const double tolerance = absoluteTolerance();
-  for (std::size_t i = 0; i < loops.size(); ++i)
-    for (Vec3 xyz : loopSamples(loops[i])) {
-      const double offset = std::abs(dot(xyz - fit.origin, fit.normal));
-      if (offset > tolerance)
-        fail("Plane surface ", tag, " is not plane: its ",
-             i == 0 ? "outer loop" : "hole " + std::to_string(i), " passes ", offset,
-             " away from the plane of its outer loop");
+  const Vec3 normal = leastSquaresNormal(outer, fit.origin, fit.normal);
+  auto plane = std::make_shared<PlaneGeometry>(fit.origin, normal);
+  double deviation = 0;
+  for (const std::vector<int>& loop : loops)
+    for (Vec3 xyz : loopSamples(loop)) {
+      deviation = std::max(deviation, std::abs(dot(xyz - fit.origin, normal)));
       plane->include(xyz);
     }
-  return plane;
+  return {plane, deviation};
+}
+
+double GeoFactory::planeDeviation(int tag) const {
+  const auto surface = surfaces_.find(tag);
+  if (surface == surfaces_.end() || surface->second.kind != SurfaceKind::Plane) return 0;
+  const double deviation = fitPlaneSurface(tag, surface->second.loops).second;
+  return deviation > absoluteTolerance() ? deviation : 0;
 }
 
 namespace {
@@ -75,7 +109,7 @@ std::optional<std::pair<Vec3, double>> commonSphere(
 }  // namespace
 
 std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
-  if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops);
+  if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops).first;
   const std::vector<int>& loop = s.loops.front();
   if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion) {
     const int source = s.extrusion->source;

@@ -118,7 +118,13 @@ void GeoFactory::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks)
 void writeUnrolledGeo(const GeoFactory& geo, std::ostream& out, const UnrolledGeoHooks& hooks) {
   writePoints(geo, out);
   for (const auto& [tag, c] : geo.curves()) {
-    out << curveKeyword(c.kind) << "(" << tag << ") = " << tagList(c.points) << ";\n";
+    if (c.knots.empty()) {
+      out << curveKeyword(c.kind) << "(" << tag << ") = " << tagList(c.points) << ";\n";
+    } else {
+      out << "Nurbs(" << tag << ") = " << tagList(c.points) << " Knots {";
+      for (std::size_t i = 0; i < c.knots.size(); ++i) out << (i ? ", " : "") << number(c.knots[i]);
+      out << "} Order " << c.degree << ";\n";
+    }
     writeEmbedded("Point", c.embeddedPoints, "Curve", tag, out);
     after(hooks, {1, tag}, out);
   }

@@ -209,6 +209,21 @@ TEST_F(ModelCommands, MergeReadsAMeshThatMeshingThenKeeps) {
   EXPECT_EQ(mesh.elementCount(2), run.session.mesh().elementCount(2));
 }
 
+TEST_F(ModelCommands, MergeReadsMsh1And3Files) {
+  const std::string nodes = "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n";
+  std::ofstream(dir_ / "v1.msh") << "$NOD\n4\n" << nodes << "$ENDNOD\n$ELM\n2\n"
+                                 << "1 2 10 7 3 1 2 3\n2 2 10 7 3 1 3 4\n$ENDELM\n";
+  std::ofstream(dir_ / "v3.msh") << "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n$Nodes\n4\n" << nodes
+                                 << "$EndNodes\n$Elements\n2\n1 2 2 10 7 1 2 3\n"
+                                 << "2 2 2 10 7 1 3 4\n$EndElements\n";
+  for (const char* file : {"v1.msh", "v3.msh"}) {
+    ScriptRun run;
+    runMain(run, "Merge \"" + std::string(file) + "\";\n");
+    EXPECT_EQ(run.session.mesh().elementCount(2), 2u) << file;
+    EXPECT_NEAR(triangleArea(run.session.mesh()), 1.0, 1e-12) << file;
+  }
+}
+
 TEST_F(ModelCommands, MergeOfAMeshBesideGeometryIsRefused) {
   {
     ScriptRun first;

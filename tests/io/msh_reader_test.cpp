@@ -211,8 +211,8 @@ TEST(MshReader, Version22MeshesPassTheCheckThatStillFindsDefects) {
 
 TEST(MshReader, ErrorsNameFileAndLine) {
   EXPECT_EQ(readError(""), "test.msh:1: not an MSH file: no $MeshFormat");
-  EXPECT_EQ(readError("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n"),
-            "test.msh:2: unsupported MSH version 3.0 (4.1 and 2.2 are supported)");
+  EXPECT_EQ(readError("$MeshFormat\n5.0 0 8\n$EndMeshFormat\n"),
+            "test.msh:2: unsupported MSH version 5.0 (4.1, 3.0, 2.x and 1.0 are supported)");
   std::string bad = kTwoSquares;
   bad.replace(bad.find("0.4999999999986942 0 0"), 6, "0.4x99");
   EXPECT_EQ(readError(bad), "test.msh:49: expected a number, found '0.4x99999999986942'");

@@ -1,1 +1,2 @@
-Point(-1) = {0, 0, 0};
+Point(1) = {0, 0, 0};
+Physical Point(1.5) = {1};
