@@ -5,12 +5,14 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepTools_History.hxx>
+#include <BRep_Tool.hxx>
 #include <Message_Report.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
 
 #include <algorithm>
 #include <memory>
@@ -252,9 +254,13 @@ std::vector<TaggedShape> toolSubShapesKept(const OccShapes& shapes,
       const BooleanInput& in = inputs[i];
       if (!in.remove || in.unchanged() || dim >= in.id.dim) continue;
       if (op == SolidModeling::BooleanOperation::Union && in.id.dim == 3) continue;
-      for (TopExp_Explorer it(in.shape, kTypes[dim]); it.More(); it.Next())
-        if (inResult.Contains(it.Current()) && shapes.isBound(dim, it.Current()))
+      for (TopExp_Explorer it(in.shape, kTypes[dim]); it.More(); it.Next()) {
+        // The degenerate curve at a sphere's or a cone's pole is numbered anew.
+        const bool degenerate =
+            dim == 1 && BRep_Tool::Degenerated(TopoDS::Edge(it.Current()));
+        if (!degenerate && inResult.Contains(it.Current()) && shapes.isBound(dim, it.Current()))
           out.push_back({dim, shapes.tagOf(dim, it.Current()), it.Current()});
+      }
     }
   }
   return out;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -275,11 +276,81 @@ double orientationOf(const SurfaceGeometry& g, const Mesh& mesh, const EntityMes
   return dot(cross(b - a, c - a), cross(d.du, d.dv)) > 0 ? 1 : -1;
 }
 
+// Four triangles left around a node of the surface's own that nothing else uses: the node
+// goes, and the four become the quadrangle around it when it is convex (a coarse square cut
+// from its centre recombines into one quadrangle). Returns the quadrangles made.
+std::size_t collapseDiamonds(const SurfaceGeometry& g, const Mesh& mesh, EntityMesh& em,
+                             double orientation) {
+  ElementBlock* triangles = nullptr;
+  for (ElementBlock& b : em.blocks)
+    if (b.type == ElementType::Triangle3) triangles = &b;
+  if (!triangles) return 0;
+  std::unordered_map<NodeIndex, std::vector<std::uint32_t>> around;
+  for (std::uint32_t t = 0; t < triangles->size(); ++t)
+    for (NodeIndex n : triangles->element(t)) around[n].push_back(t);
+  std::unordered_map<NodeIndex, int> usesElsewhere;
+  for (const ElementBlock& b : em.blocks)
+    if (b.type != ElementType::Triangle3)
+      for (NodeIndex n : b.nodes) ++usesElsewhere[n];
+  std::vector<std::uint8_t> gone(triangles->size(), 0);
+  std::vector<NodeIndex> quads, dropped;
+  for (std::size_t k = 0; k < em.nodes.size(); ++k) {
+    const NodeIndex o = em.nodes[k];
+    const auto it = around.find(o);
+    if (it == around.end() || it->second.size() != 4 || usesElsewhere.contains(o)) continue;
+    if (std::any_of(it->second.begin(), it->second.end(), [&](std::uint32_t t) { return gone[t]; }))
+      continue;
+    // Each triangle (o, a, b) in its turning order gives the side a -> b of the outline.
+    std::map<NodeIndex, NodeIndex> next;
+    for (std::uint32_t t : it->second) {
+      const auto n = triangles->element(t);
+      const int at = static_cast<int>(std::find(n.begin(), n.end(), o) - n.begin());
+      next[n[(at + 1) % 3]] = n[(at + 2) % 3];
+    }
+    if (next.size() != 4) continue;
+    std::array<NodeIndex, 4> q{next.begin()->first, 0, 0, 0};
+    for (int i = 1; i < 4; ++i) q[i] = next[q[i - 1]];
+    if (next[q[3]] != q[0]) continue;
+    const Vec3 c = mesh.node(o);
+    const SurfaceDerivatives d = g.firstDerivatives(g.project(c));
+    if (!(quadAngleQuality(mesh.node(q[0]), mesh.node(q[1]), mesh.node(q[2]), mesh.node(q[3]),
+                           orientation * cross(d.du, d.dv)) > 0))
+      continue;
+    for (std::uint32_t t : it->second) gone[t] = 1;
+    quads.insert(quads.end(), q.begin(), q.end());
+    dropped.push_back(o);
+  }
+  if (quads.empty()) return 0;
+  std::vector<NodeIndex> kept;
+  for (std::uint32_t t = 0; t < triangles->size(); ++t)
+    if (!gone[t]) kept.insert(kept.end(), triangles->element(t).begin(), triangles->element(t).end());
+  triangles->nodes = std::move(kept);
+  ElementBlock& block = em.block(ElementType::Quad4);
+  block.nodes.insert(block.nodes.end(), quads.begin(), quads.end());
+  std::vector<NodeIndex> nodes;
+  std::vector<double> parametric;
+  const bool withParameters = em.parametric.size() == 2 * em.nodes.size();
+  for (std::size_t k = 0; k < em.nodes.size(); ++k) {
+    if (std::find(dropped.begin(), dropped.end(), em.nodes[k]) != dropped.end()) continue;
+    nodes.push_back(em.nodes[k]);
+    if (withParameters)
+      parametric.insert(parametric.end(), {em.parametric[2 * k], em.parametric[2 * k + 1]});
+  }
+  em.nodes = std::move(nodes);
+  em.parametric = std::move(parametric);
+  em.blocks.erase(std::remove_if(em.blocks.begin(), em.blocks.end(),
+                                 [](const ElementBlock& b) { return b.nodes.empty(); }),
+                  em.blocks.end());
+  return quads.size() / 4;
+}
+
 }  // namespace
 
 std::size_t pairLeftoverTriangles(const SurfaceGeometry& g, Mesh& mesh, EntityMesh& em,
                                   const std::vector<std::uint64_t>& keptEdges) {
   std::size_t paired = 0;
+  if (const ElementBlock* t = em.findBlock(ElementType::Triangle3); t && t->size() >= 4)
+    paired += collapseDiamonds(g, mesh, em, orientationOf(g, mesh, em));
   // Each pass joins one pair; a pair that cannot be joined ends the work.
   while (true) {
     const ElementBlock* triangles = em.findBlock(ElementType::Triangle3);

@@ -206,6 +206,23 @@ TEST(Recombine, FullQuadOfOneSurfaceHalvesThenSplits) {
   EXPECT_LE(mesh.elementCount(1), 60u);
 }
 
+// A square coarser than its size is cut into four triangles around its centre; recombined,
+// it is one quadrangle (the centre goes), as in the reference.
+TEST(Recombine, CoarseSquareIsOneQuadrangle) {
+  PolygonModelBuilder b;
+  b.surface({b.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 10)});
+  b.model.meshConstraints().recombinedSurfaces[1] = 45;
+  Mesh mesh;
+  SilentSink log;
+  generateMesh(b.model, {}, 2, mesh, log);
+  const Counts c = count(mesh, 1);
+  EXPECT_EQ(c.triangles, 0u);
+  EXPECT_EQ(c.quads, 1u);
+  EXPECT_TRUE(mesh.find({2, 1})->nodes.empty());
+  EXPECT_NEAR(c.area, 1.0, 1e-12);
+  EXPECT_TRUE(checkMesh(b.model, mesh).ok());
+}
+
 }  // namespace
 }  // namespace geomesh
 

@@ -23,3 +23,11 @@ Box(21) = {50.25, 0.25, 0.25, 0.5, 0.5, 0.5};
 r() = BooleanDifference{ Volume{20}; Delete; }{ Volume{21}; Delete; };
 b() = Boundary{ Volume{r(0)}; };
 Printf("cavity: volume %g, faces %g %g ... %g %g", r(0), b(0), b(1), b(10), b(11));
+
+// A spherical pocket through the top of a block: the sphere's curve at its pole, inside the
+// block, is numbered anew with the rest.
+Box(30) = {70, 0, 0, 2, 2, 1};
+Sphere(31) = {71, 1, 1.1, 0.45};
+r() = BooleanDifference{ Volume{30}; Delete; }{ Volume{31}; Delete; };
+c() = Curve{:};
+Printf("pocket: %g curves in the model, from %g to %g", #c(), c(0), c(#c() - 1));
