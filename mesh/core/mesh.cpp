@@ -68,6 +68,33 @@ std::size_t Mesh::elementCount(int dim) const {
   return n;
 }
 
+std::size_t Mesh::dropUnheldNodes() {
+  constexpr NodeIndex kNone = ~NodeIndex{0};
+  const std::size_t count = nodeCount();
+  std::vector<NodeIndex> renumbered(count, kNone);
+  for (const auto& [id, em] : entities_)
+    for (NodeIndex n : em.nodes) renumbered[n] = 0;
+  NodeIndex next = 0;
+  for (std::size_t n = 0; n < count; ++n)
+    if (renumbered[n] != kNone) {
+      const std::size_t to = next;
+      for (int c = 0; c < 3; ++c) coords_[3 * to + c] = coords_[3 * n + c];
+      if (!sizes_.empty()) sizes_[to] = sizes_[n];
+      renumbered[n] = next++;
+    }
+  if (next == count) return 0;
+  coords_.resize(3 * static_cast<std::size_t>(next));
+  if (!sizes_.empty()) sizes_.resize(next);
+  for (auto& [id, em] : entities_) {
+    for (NodeIndex& n : em.nodes) n = renumbered[n];
+    for (ElementBlock& b : em.blocks)
+      for (NodeIndex& n : b.nodes) n = renumbered[n];
+    if (em.periodic)
+      for (auto& [here, there] : em.periodic->nodes) here = renumbered[here], there = renumbered[there];
+  }
+  return count - next;
+}
+
 void Mesh::clear() {
   coords_.clear();
   sizes_.clear();

@@ -89,6 +89,9 @@ class Mesh {
   const std::map<EntityId, EntityMesh>& entities() const { return entities_; }
   std::size_t elementCount(int dim) const;  // dim -1: all
   void clear();
+  // Drops the nodes no entity holds (left over when a mesher removes a node it had added),
+  // renumbering the others in their order everywhere they appear. Returns how many went.
+  std::size_t dropUnheldNodes();
 
  private:
   std::vector<double> coords_;

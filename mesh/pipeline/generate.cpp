@@ -204,6 +204,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
     else
       periodic.copySurface(p.tag, mesh);
   }
+  mesh.dropUnheldNodes();  // the nodes recombination took out
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)
     if (problem.entity.dim == 2) throw MeshError(problem.entity, problem.message);

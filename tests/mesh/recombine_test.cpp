@@ -220,7 +220,8 @@ TEST(Recombine, CoarseSquareIsOneQuadrangle) {
   EXPECT_EQ(c.quads, 1u);
   EXPECT_TRUE(mesh.find({2, 1})->nodes.empty());
   EXPECT_NEAR(c.area, 1.0, 1e-12);
-  EXPECT_TRUE(checkMesh(b.model, mesh).ok());
+  const MeshCheckReport report = checkMesh(b.model, mesh);
+  EXPECT_TRUE(report.ok()) << report.summary();
 }
 
 }  // namespace
