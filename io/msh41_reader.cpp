@@ -25,7 +25,7 @@ std::vector<int> tagList(MshDecoder& in) {
 
 void readEntity(MshDecoder& in, MshReadState& state, int dim) {
   const int tag = in.integer();
-  if (tag <= 0) in.fail("invalid entity tag " + std::to_string(tag));
+  if (tag < 0) in.fail("invalid entity tag " + std::to_string(tag));  // 0 is a tag too
   Vec3 min{in.real(), in.real(), in.real()};
   if (dim > 0)
     for (int i = 0; i < 3; ++i) in.real();  // the box's upper corner: derived, not stored
