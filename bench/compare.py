@@ -104,7 +104,7 @@ def prepare(name, script, geomesh, work):
     for f in (script, maker):
         shutil.copy(SCRIPTS / f, work / f)
     if not (work / made).exists():
-        subprocess.run([str(geomesh), maker, "-0", "-o", "cad_part_model.geo_unrolled"], cwd=work,
+        subprocess.run([str(geomesh), maker, "-0", "-o", maker + "_unrolled"], cwd=work,
                        check=True, capture_output=True)
     return work / script
 

@@ -141,13 +141,7 @@ TopoDS_Shape healedShape(const TopoDS_Shape& shape, const Options& options) {
 std::vector<EntityId> OccFactory::healShapes(const std::vector<EntityId>& shapes,
                                              const HealingOptions& options) {
   TopoDS_Shape input = compoundOfAll(*shapes_);
-  if (!shapes.empty()) {
-    TopoDS_Compound some;
-    BRep_Builder builder;
-    builder.MakeCompound(some);
-    for (const EntityId& e : shapes) builder.Add(some, shapes_->find(e.dim, std::abs(e.tag)));
-    input = some;
-  }
+  if (!shapes.empty()) input = compoundOf(*shapes_, shapes);
   const TopoDS_Shape result =
       guarded("HealShapes", [&] { return healedShape(input, options); });
   if (shapes.empty()) {

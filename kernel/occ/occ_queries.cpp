@@ -2,9 +2,6 @@
 // (transformations, copies, deletion).
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
-#include <TopoDS_Iterator.hxx>
-#include <TopoDS_Compound.hxx>
-#include <BRep_Builder.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -15,6 +12,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
@@ -232,10 +230,7 @@ void OccFactory::transform(const std::vector<EntityId>& shapes, const AffineMap&
   const std::array<double, 12> m = folded(map);
   double scale = 1;
   const bool similarity = isSimilarity(map, scale);
-  TopoDS_Compound all;
-  BRep_Builder builder;
-  builder.MakeCompound(all);
-  for (const EntityId& e : shapes) builder.Add(all, shapes_->find(e.dim, std::abs(e.tag)));
+  const TopoDS_Shape all = compoundOf(*shapes_, shapes);
   const TopoDS_Shape moved = guarded("the transformation", [&] {
     if (similarity) {
       gp_Trsf t;
@@ -260,10 +255,7 @@ void OccFactory::transform(const std::vector<EntityId>& shapes, const AffineMap&
 // The shapes are copied together, as one compound, so that copies of shapes that shared
 // sub-shapes (curves meeting at a point) share the copies of those.
 std::vector<EntityId> OccFactory::duplicate(const std::vector<EntityId>& shapes) {
-  TopoDS_Compound all;
-  BRep_Builder builder;
-  builder.MakeCompound(all);
-  for (const EntityId& e : shapes) builder.Add(all, shapes_->find(e.dim, std::abs(e.tag)));
+  const TopoDS_Shape all = compoundOf(*shapes_, shapes);
   const TopoDS_Shape copy =
       guarded("Duplicata", [&] { return BRepBuilderAPI_Copy(all).Shape(); });
   std::vector<EntityId> out;

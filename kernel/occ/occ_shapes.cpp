@@ -117,6 +117,14 @@ TopoDS_Shape compoundOfAll(const OccShapes& shapes) {
   return all;
 }
 
+TopoDS_Shape compoundOf(const OccShapes& shapes, const std::vector<EntityId>& entities) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (const EntityId& e : entities) builder.Add(all, shapes.find(e.dim, std::abs(e.tag)));
+  return all;
+}
+
 void OccShapes::unbind(int dim, int tag, bool recursive) {
   auto found = byTag[dim].find(tag);
   if (found == byTag[dim].end()) return;

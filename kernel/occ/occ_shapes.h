@@ -68,6 +68,9 @@ std::vector<EntityId> bindShapes(OccShapes& shapes, const TopoDS_Shape& shape, b
 
 // Every bound shape that is not part of another one, as one compound.
 TopoDS_Shape compoundOfAll(const OccShapes& shapes);
+// The given entities' shapes as one compound, in their order (operations on them together
+// keep the sub-shapes they share shared).
+TopoDS_Shape compoundOf(const OccShapes& shapes, const std::vector<EntityId>& entities);
 
 // Runs `build`, turning an OpenCASCADE failure into a GeometryError "what: reason".
 template <class Build>

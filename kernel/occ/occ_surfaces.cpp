@@ -22,6 +22,7 @@
 #include <TopoDS_Wire.hxx>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "kernel/geometry_error.h"
@@ -51,6 +52,24 @@ void OccFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   shapes_->bindTree(2, tag, face);
 }
 
+namespace {
+
+// The face of `surface` bounded by the script's wire, whose curves lie on the surface only to
+// a tolerance: the fix computes their curves in the surface's parameters (on the same edges,
+// which keep their tags) and turns a loop that runs the wrong way round. Null when no face is
+// made.
+std::optional<TopoDS_Face> faceOnSurface(const Handle(Geom_Surface)& surface,
+                                         const TopoDS_Wire& wire) {
+  BRepBuilderAPI_MakeFace maker(surface, wire, true);
+  if (!maker.IsDone()) return std::nullopt;
+  ShapeFix_Face fix(maker.Face());
+  fix.FixAddNaturalBoundMode() = false;
+  fix.Perform();
+  return fix.Face();
+}
+
+}  // namespace
+
 // A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them: the
 // filling's own face has new edges, so the face is rebuilt on the loop's wire, which keeps the
 // script's curves (and their tags) as its boundary.
@@ -77,17 +96,9 @@ void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
     if (!filling.IsDone()) throw GeometryError(what + ": no surface fills this loop");
     TopExp_Explorer faces(filling.Shape(), TopAbs_FACE);
     if (!faces.More()) throw GeometryError(what + ": no surface fills this loop");
-    const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(faces.Current()));
-    BRepBuilderAPI_MakeFace maker(surface, TopoDS::Wire(wire), true);
-    if (!maker.IsDone()) return filling.Shape();
-    // The wire's curves lie on the surface only to the filling's tolerance: the fix computes
-    // their curves in the surface's parameters (on the same edges), and turns a loop that
-    // runs the wrong way round.
-    ShapeFix_Face fix(maker.Face());
-    fix.FixAddNaturalBoundMode() = false;
-    fix.Perform();
-    const TopoDS_Face rebuilt = fix.Face();
-    return TopoDS_Shape(rebuilt);
+    const auto rebuilt = faceOnSurface(BRep_Tool::Surface(TopoDS::Face(faces.Current())),
+                                       TopoDS::Wire(wire));
+    return rebuilt ? TopoDS_Shape(*rebuilt) : filling.Shape();
   });
   shapes_->bindTree(2, tag, face);
 }
@@ -129,13 +140,9 @@ void OccFactory::addCurveFilling(int tag, int curveLoop, bool bezier) {
     if (c.size() == 2) fill.Init(c[0], c[1], GeomFill_CurvedStyle);
     if (c.size() == 3) fill.Init(c[0], c[1], c[2], GeomFill_CurvedStyle);
     if (c.size() == 4) fill.Init(c[0], c[1], c[2], c[3], GeomFill_CurvedStyle);
-    const Handle(Geom_Surface) surface(fill.Surface());
-    BRepBuilderAPI_MakeFace maker(surface, wire, true);
-    if (!maker.IsDone()) throw GeometryError(what + ": no surface fills its loop");
-    ShapeFix_Face fix(maker.Face());
-    fix.FixAddNaturalBoundMode() = false;
-    fix.Perform();
-    return TopoDS_Shape(fix.Face());
+    const auto face = faceOnSurface(Handle(Geom_Surface)(fill.Surface()), wire);
+    if (!face) throw GeometryError(what + ": no surface fills its loop");
+    return TopoDS_Shape(*face);
   });
   shapes_->bindTree(2, tag, face);
 }

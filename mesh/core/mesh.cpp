@@ -71,6 +71,9 @@ std::size_t Mesh::elementCount(int dim) const {
 std::size_t Mesh::dropUnheldNodes() {
   constexpr NodeIndex kNone = ~NodeIndex{0};
   const std::size_t count = nodeCount();
+  std::size_t held = 0;  // a node belongs to one entity at most
+  for (const auto& [id, em] : entities_) held += em.nodes.size();
+  if (held == count) return 0;
   std::vector<NodeIndex> renumbered(count, kNone);
   for (const auto& [id, em] : entities_)
     for (NodeIndex n : em.nodes) renumbered[n] = 0;

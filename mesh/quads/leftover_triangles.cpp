@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "mesh/quads/recombine.h"
@@ -293,7 +294,8 @@ std::size_t collapseDiamonds(const SurfaceGeometry& g, const Mesh& mesh, EntityM
     if (b.type != ElementType::Triangle3)
       for (NodeIndex n : b.nodes) ++usesElsewhere[n];
   std::vector<std::uint8_t> gone(triangles->size(), 0);
-  std::vector<NodeIndex> quads, dropped;
+  std::vector<NodeIndex> quads;
+  std::unordered_set<NodeIndex> dropped;
   for (std::size_t k = 0; k < em.nodes.size(); ++k) {
     const NodeIndex o = em.nodes[k];
     const auto it = around.find(o);
@@ -318,7 +320,7 @@ std::size_t collapseDiamonds(const SurfaceGeometry& g, const Mesh& mesh, EntityM
       continue;
     for (std::uint32_t t : it->second) gone[t] = 1;
     quads.insert(quads.end(), q.begin(), q.end());
-    dropped.push_back(o);
+    dropped.insert(o);
   }
   if (quads.empty()) return 0;
   std::vector<NodeIndex> kept;
@@ -331,7 +333,7 @@ std::size_t collapseDiamonds(const SurfaceGeometry& g, const Mesh& mesh, EntityM
   std::vector<double> parametric;
   const bool withParameters = em.parametric.size() == 2 * em.nodes.size();
   for (std::size_t k = 0; k < em.nodes.size(); ++k) {
-    if (std::find(dropped.begin(), dropped.end(), em.nodes[k]) != dropped.end()) continue;
+    if (dropped.contains(em.nodes[k])) continue;
     nodes.push_back(em.nodes[k]);
     if (withParameters)
       parametric.insert(parametric.end(), {em.parametric[2 * k], em.parametric[2 * k + 1]});

@@ -505,16 +505,15 @@ std::unique_ptr<tetgenio> followInteriorSize(const ModelVolume& volume, TetgenIn
   for (int pass = 0; pass < kPasses; ++pass) {
     const int before = mesh->numberofpoints;
     std::vector<double> sizes(static_cast<std::size_t>(before));
+    // All sizes as TetGen reads them (see kTetgenSizeScale), as boundarySizes are.
     for (int i = 0; i < before; ++i) {
       const double* p = mesh->pointlist + 3 * i;
-      double size = interiorSize({p[0], p[1], p[2]}) * factor;
+      sizes[i] = kTetgenSizeScale * std::clamp(interiorSize({p[0], p[1], p[2]}) * factor,
+                                               options.sizeMin, options.sizeMax);
       if (i < static_cast<int>(boundarySizes.size()))
-        size = std::min(kTetgenSizeScale * size, boundarySizes[i]);
+        sizes[i] = std::min(sizes[i], boundarySizes[i]);
       else if (options.sizeExtendFromBoundary && mesh->pointmtrlist)
-        size = std::min(size, mesh->pointmtrlist[i] / kTetgenSizeScale);
-      sizes[i] = i < static_cast<int>(boundarySizes.size())
-                     ? size
-                     : kTetgenSizeScale * std::clamp(size, options.sizeMin, options.sizeMax);
+        sizes[i] = std::min(sizes[i], mesh->pointmtrlist[i]);
     }
     TetgenBackground background(*mesh, std::move(sizes));
     auto next = std::make_unique<tetgenio>();

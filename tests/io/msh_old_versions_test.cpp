@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/msh_reader.h"
+#include "tests/io/msh_text_reading.h"
 
 namespace geomesh {
 namespace {
@@ -48,26 +49,10 @@ $Elements
 $EndElements
 )msh";
 
-struct ReadResult {
-  Model model;
-  Mesh mesh;
-};
+using testing::ReadResult;
 
-ReadResult read(const std::string& text) {
-  ReadResult r;
-  std::istringstream in(text);
-  readMsh(in, r.model, r.mesh, "old.msh");
-  return r;
-}
-
-std::string readError(const std::string& text) {
-  try {
-    read(text);
-  } catch (const MshReadError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+ReadResult read(const std::string& text) { return testing::read(text, "old.msh"); }
+std::string readError(const std::string& text) { return testing::readError(text, "old.msh"); }
 
 void expectSquare(const ReadResult& r) {
   EXPECT_EQ(r.mesh.nodeCount(), 4u);

@@ -1,5 +1,6 @@
 // Tests of the MSH reader: 4.1 and 2.2 round trips, located errors, corrupt, truncated input.
 #include "io/msh_reader.h"
+#include "tests/io/msh_text_reading.h"
 
 #include <gtest/gtest.h>
 
@@ -112,31 +113,14 @@ $Elements
 $EndElements
 )msh";
 
-struct ReadResult {
-  Model model;
-  Mesh mesh;
-};
-
-ReadResult read(const std::string& text) {
-  ReadResult r;
-  std::istringstream in(text);
-  readMsh(in, r.model, r.mesh, "test.msh");
-  return r;
-}
+using testing::read;
+using testing::ReadResult;
+using testing::readError;
 
 std::string write(const ReadResult& r, MshWriteOptions options = {}) {
   std::ostringstream out;
   writeMsh(out, r.model, r.mesh, options);
   return out.str();
-}
-
-std::string readError(const std::string& text) {
-  try {
-    read(text);
-  } catch (const MshReadError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(MshReader, ReadsEntitiesPhysicalGroupsAndMesh) {
