@@ -6,6 +6,7 @@
 
 #include "grammar/diagnostic.h"
 #include "mesh/core/mesh_error.h"
+#include "mesh/pipeline/generate.h"
 
 namespace geomesh::api {
 
@@ -43,6 +44,17 @@ void generate(Session& session, int dim) {
     session.generate(dim);
   } catch (const MeshError& error) {
     // Point at the statement that defined the entity, when the script did.
+    if (auto where = session.origin(error.entity)) failAt(*where, error.what());
+    throw;
+  }
+}
+
+void setOrder(Session& session, int order) {
+  MeshOptions options = session.meshOptions();
+  options.elementOrder = order;
+  try {
+    raiseOrder(session.model(), options, session.mesh(), session.log());
+  } catch (const MeshError& error) {
     if (auto where = session.origin(error.entity)) failAt(*where, error.what());
     throw;
   }

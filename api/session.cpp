@@ -52,6 +52,12 @@ MeshOptions Session::meshOptions() const {
   m.algorithm3D = clampedInteger<int>(o.number("Mesh.Algorithm3D"));
   m.smoothing = clampedInteger<int>(o.number("Mesh.Smoothing"));
   m.elementOrder = clampedInteger<int>(o.number("Mesh.ElementOrder"));
+  m.secondOrderLinear = o.number("Mesh.SecondOrderLinear") != 0;
+  m.secondOrderIncomplete = o.number("Mesh.SecondOrderIncomplete") != 0;
+  m.highOrderOptimize = clampedInteger<int>(o.number("Mesh.HighOrderOptimize"));
+  m.highOrderThresholdMin = o.number("Mesh.HighOrderThresholdMin");
+  m.highOrderThresholdMax = o.number("Mesh.HighOrderThresholdMax");
+  m.highOrderNumLayers = clampedInteger<int>(o.number("Mesh.HighOrderNumLayers"));
   m.numThreads = clampedInteger<int>(o.number("General.NumThreads"));
   m.randomFactor = o.number("Mesh.RandomFactor");
   m.recombineAll = o.number("Mesh.RecombineAll") != 0;

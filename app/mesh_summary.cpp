@@ -1,23 +1,41 @@
-// Element counts, measures, quality and physical groups of a mesh, and their printed form.
+// Element counts, measures, quality, validity of curved elements and physical groups of a
+// mesh, and their printed form.
 #include "app/mesh_summary.h"
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <sstream>
 
 #include "mesh/core/quality.h"
+#include "mesh/high_order/jacobian.h"
 
 namespace geomesh {
 
 namespace {
 
+std::vector<Vec3> elementNodes(const Mesh& mesh, std::span<const NodeIndex> nodes) {
+  std::vector<Vec3> out;
+  out.reserve(nodes.size());
+  for (NodeIndex n : nodes) out.push_back(mesh.node(n));
+  return out;
+}
+
+// Curved elements are measured by quadrature over their own shape.
+double blockMeasure(const Mesh& mesh, const ElementBlock& block) {
+  double total = 0;
+  for (std::size_t i = 0; i < block.size(); ++i)
+    total += order(block.type) >= 2
+                 ? elementMeasure(block.type, elementNodes(mesh, block.element(i)))
+                 : elementMeasure(mesh, block.type, block.element(i));
+  return total;
+}
+
 void addMeasures(const Mesh& mesh, MeshSummary& s) {
   for (const auto& [id, em] : mesh.entities()) {
     for (const ElementBlock& block : em.blocks) {
       s.elements[block.type] += block.size();
-      double total = 0;
-      for (std::size_t i = 0; i < block.size(); ++i)
-        total += elementMeasure(mesh, block.type, block.element(i));
+      const double total = blockMeasure(mesh, block);
       switch (dimension(block.type)) {
         case 1: s.length += total; break;
         case 2: s.area += total; break;
@@ -26,6 +44,21 @@ void addMeasures(const Mesh& mesh, MeshSummary& s) {
       }
     }
   }
+}
+
+void addCurvedValidity(const Mesh& mesh, MeshSummary& s) {
+  for (const auto& [type, n] : s.elements) s.highOrder = s.highOrder || order(type) >= 2;
+  if (!s.highOrder) return;
+  s.minScaledJacobian = 1;
+  for (const auto& [id, em] : mesh.entities())
+    for (const ElementBlock& block : em.blocks) {
+      if (dimension(block.type) == 0) continue;
+      for (std::size_t i = 0; i < block.size(); ++i) {
+        const double q = scaledJacobian(block.type, elementNodes(mesh, block.element(i)));
+        s.minScaledJacobian = std::min(s.minScaledJacobian, q);
+        if (q <= 0) ++s.invalidElements;
+      }
+    }
 }
 
 void addGroups(const Model& model, const Mesh& mesh, MeshSummary& s) {
@@ -47,6 +80,7 @@ MeshSummary summarizeMesh(const Model& model, const Mesh& mesh) {
   MeshSummary s;
   s.nodes = mesh.nodeCount();
   addMeasures(mesh, s);
+  addCurvedValidity(mesh, s);
   addGroups(model, mesh, s);
   // Quality of the highest-dimensional elements present.
   for (int dim = 3; dim >= 2; --dim) {
@@ -81,6 +115,15 @@ std::string formatSummary(const MeshSummary& s) {
     os.precision(4);
     os << "; quality (gamma) min " << s.minQuality << ", mean " << s.meanQuality;
   }
+  return os.str();
+}
+
+std::string formatCurvedValidity(const MeshSummary& s) {
+  if (!s.highOrder) return {};
+  std::ostringstream os;
+  os.precision(4);
+  os << "curved elements: scaled Jacobian min " << s.minScaledJacobian << ", "
+     << s.invalidElements << " invalid";
   return os.str();
 }
 

@@ -22,6 +22,11 @@ struct MeshSummary {
   // Gamma of the highest-dimensional elements (1 for an equilateral one); 0 when none.
   double minQuality = 0;
   double meanQuality = 0;
+  // Validity of curved meshes, measured when any element has order 2 or more: the minimum
+  // scaled Jacobian over all elements (of dimension 1 to 3) and how many are <= 0.
+  bool highOrder = false;
+  double minScaledJacobian = 0;
+  std::size_t invalidElements = 0;
   struct Group {
     int dim = 0;
     int tag = 0;
@@ -33,6 +38,8 @@ struct MeshSummary {
 
 MeshSummary summarizeMesh(const Model& model, const Mesh& mesh);
 std::string formatSummary(const MeshSummary& summary);
+// "curved elements: scaled Jacobian min 0.62, 0 invalid"; empty when not highOrder.
+std::string formatCurvedValidity(const MeshSummary& summary);
 // "4 points, 4 curves, 1 surface, 0 volumes, 2 physical groups"
 std::string describeModel(const Model& model);
 

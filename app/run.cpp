@@ -16,6 +16,7 @@
 #include "interpreter/diagnostics.h"
 #include "interpreter/run_script.h"
 #include "io/formats.h"
+#include "mesh/high_order/set_order.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/core/mesh_error.h"
 
@@ -103,6 +104,11 @@ void generate(const CommandLine& cl, Session& session, const MeshFormat& format,
   }
 }
 
+void logSummary(const MeshSummary& summary, ConsoleLog& log) {
+  log.info(formatSummary(summary));
+  if (summary.highOrder) log.info(formatCurvedValidity(summary));
+}
+
 void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   if (*cl.dimension == 0) {
     session.synchronize();
@@ -112,6 +118,12 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   }
   const std::string path = outputPath(cl);
   const MeshFormat& format = api::outputFormat(session.options(), path, cl.format);
+  const int order = session.meshOptions().elementOrder;
+  if (const std::string why = unsupportedOrderReason(order); !why.empty())
+    throw std::invalid_argument("Mesh.ElementOrder: " + why);
+  if (const std::string why = orderUnsupportedReason(format, order); !why.empty())
+    throw std::invalid_argument("cannot write elements of order " + std::to_string(order) +
+                                " to '" + path + "': " + why);
   api::requireSomethingToMesh(session, *cl.dimension);
   Stopwatch watch;
   generate(cl, session, format, path, log);
@@ -120,11 +132,31 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   log.info("Writing '" + path + "'...");
   api::writeMesh(session, path, format);
   log.info("Done writing '" + path + "' (" + formatSeconds(writeWatch.seconds()) + ")");
-  log.info(formatSummary(summarizeMesh(session.model(), session.mesh())));
+  logSummary(summarizeMesh(session.model(), session.mesh()), log);
 }
 
 bool isMeshFile(const std::string& path) {
   return findReaderByExtension(std::filesystem::path(path).extension().string()) != nullptr;
+}
+
+// -check: conformity and orientation, and curved elements whose Jacobian is not positive
+// everywhere. Returns the exit status.
+int checkMeshRead(const Session& session, const MeshSummary& summary, ConsoleLog& log) {
+  const MeshCheckReport report = checkMesh(session.model(), session.mesh());
+  if (!report.ok())
+    log.error("Check: " + std::to_string(report.problems.size()) + " problem(s)\n" +
+              report.summary());
+  if (summary.invalidElements > 0) {
+    std::ostringstream os;
+    os << "Check: " << summary.invalidElements
+       << " invalid curved element(s): scaled Jacobian min " << summary.minScaledJacobian;
+    log.error(os.str());
+  }
+  if (report.ok() && summary.invalidElements == 0) {
+    log.info("Check: no problem found");
+    return 0;
+  }
+  return 1;
 }
 
 // A mesh file as input: read it, check it if asked (-check), convert it if asked (-o/-format).
@@ -135,18 +167,9 @@ int runMeshFile(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   log.info("Reading '" + path + "'...");
   session.readMesh(path);
   log.info("Done reading '" + path + "' (" + formatSeconds(watch.seconds()) + ")");
-  log.info(formatSummary(summarizeMesh(session.model(), session.mesh())));
-  int status = 0;
-  if (cl.check) {
-    MeshCheckReport report = checkMesh(session.model(), session.mesh());
-    if (report.ok()) {
-      log.info("Check: no problem found");
-    } else {
-      log.error("Check: " + std::to_string(report.problems.size()) + " problem(s)\n" +
-                report.summary());
-      status = 1;
-    }
-  }
+  const MeshSummary summary = summarizeMesh(session.model(), session.mesh());
+  logSummary(summary, log);
+  const int status = cl.check ? checkMeshRead(session, summary, log) : 0;
   if (!cl.output.empty()) {
     applyOptions(cl, session.options());
     api::writeMesh(session, cl.output, api::outputFormat(session.options(), cl.output, cl.format));

@@ -10,6 +10,7 @@
 #include "api/session.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
+#include "mesh/high_order/set_order.h"
 
 namespace geomesh {
 
@@ -29,6 +30,27 @@ bool hasBareArgument(const ast::CommandStmt& command) {
 void Interpreter::executeMesh(const ast::CommandStmt& command, const SourceLocation& where) {
   if (!hasBareArgument(command)) return unsupportedStatement(command, where);
   meshNow(*command.args[0], where);
+}
+
+// SetOrder n; gives the mesh made so far the order n (1 to 4), as Mesh.ElementOrder would.
+void Interpreter::executeSetOrder(const ast::CommandStmt& command, const SourceLocation& where) {
+  if (!hasBareArgument(command)) return unsupportedStatement(command, where);
+  const double n = evaluateNumber(*command.args[0]);
+  const int order = clampedInteger<int>(n);
+  if (n != order) fail(command.args[0]->loc, "'SetOrder' takes a whole number");
+  if (const std::string why = unsupportedOrderReason(order); !why.empty())
+    fail(command.args[0]->loc, why);
+  if (session_.sandboxed()) {
+    warn(where, "'SetOrder' skipped: this session meshes nothing");
+    return;
+  }
+  try {
+    api::setOrder(session_, order);
+  } catch (const ScriptError& error) {
+    fail(error.location(), error.message());
+  } catch (const std::runtime_error& error) {
+    fail(where, error.what());
+  }
 }
 
 void Interpreter::executeSave(const ast::CommandStmt& command, const SourceLocation& where) {

@@ -198,6 +198,7 @@ class Interpreter {
 
   // the whole model and its mesh: Mesh n, Save, Merge, Delete Model, ... (model_commands.cpp)
   void executeMesh(const ast::CommandStmt& command, const SourceLocation& where);
+  void executeSetOrder(const ast::CommandStmt& command, const SourceLocation& where);
   void executeSave(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrint(const ast::CommandStmt& command, const SourceLocation& where);
   void executeMerge(const ast::CommandStmt& command, const SourceLocation& where);

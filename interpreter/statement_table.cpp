@@ -144,7 +144,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"SetChanged ...", &Interpreter::skipInBatch},
       {"SetFactory ...", &Interpreter::executeSetFactory},
       {"SetNumber ...", &Interpreter::executeSetter},
-      {"SetOrder ...", &Interpreter::unsupportedStatement},
+      {"SetOrder", &Interpreter::executeSetOrder},
       {"SetString ...", &Interpreter::executeSetter},
       {"Show ...", &Interpreter::skipInBatch},
       {"Sleep ...", &Interpreter::skipInBatch},

@@ -31,9 +31,9 @@ void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
 // One row per format. Adding a format: its file in io/ defines the writer (and reader), and
 // one row here names them.
 constexpr MeshFormat kFormats[] = {
-    {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh},
-    {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh},
-    {"vtk", ".vtk", 16, 0.0, writeVtk, nullptr},
+    {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh, 4},
+    {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh, 4},
+    {"vtk", ".vtk", 16, 0.0, writeVtk, nullptr, 2},
 };
 
 // The words of a space-separated list.
@@ -97,6 +97,12 @@ bool MeshFormat::hasExtension(std::string_view extension) const {
 }
 
 std::span<const MeshFormat> meshFormats() { return kFormats; }
+
+std::string orderUnsupportedReason(const MeshFormat& format, int order) {
+  if (order <= format.maxOrder) return "";
+  return std::string(format.name()) + " files hold elements up to order " +
+         std::to_string(format.maxOrder);
+}
 
 const MeshFormat* findFormatByName(std::string_view name) {
   for (const MeshFormat& format : kFormats)

@@ -32,6 +32,7 @@ struct MeshFormat {
   double minVersion = 0;
   MeshWriter write = nullptr;  // null when the format is only read
   MeshReader read = nullptr;   // null when the format is only written
+  int maxOrder = 1;            // the highest element order the format holds
 
   std::string_view name() const { return names.substr(0, names.find(' ')); }
   bool isNamed(std::string_view name) const;
@@ -39,6 +40,10 @@ struct MeshFormat {
 };
 
 std::span<const MeshFormat> meshFormats();
+
+// Why `format` cannot hold elements of order `order` ("vtk files hold elements up to order
+// 2"), or "" when it can: asked before meshing, so that a run does not fail at its end.
+std::string orderUnsupportedReason(const MeshFormat& format, int order);
 
 // Null when no row matches. `version` chooses among the rows sharing an extension or a code.
 const MeshFormat* findFormatByName(std::string_view name);

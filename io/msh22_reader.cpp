@@ -1,13 +1,21 @@
-// MSH 2.2 (and 3.0) sections, and the MSH 1.0 ones they grew from: a flat node list and a flat element list whose elements carry their
-// physical group and entity tags. Nodes are classified afterwards, on the lowest-dimensional
-// entity whose elements use them.
+// MSH 2.2 (and 3.0) sections, and the MSH 1.0 ones they grew from: a flat node list and a flat
+// element list whose elements carry their physical group and entity tags. Nodes are classified
+// afterwards, on the lowest-dimensional entity whose elements use them.
 #include <algorithm>
+#include <array>
 
 #include "io/msh_read_state.h"
 
 namespace geomesh {
 
 namespace {
+
+// The most nodes an element of any type has (125, the hexahedron of order 4).
+constexpr int kMaxElementNodes = [] {
+  int most = 0;
+  for (const ElementTypeInfo& info : kElementTypes) most = std::max<int>(most, info.nodes);
+  return most;
+}();
 
 // The count that opens a section is text, even in binary files.
 std::uint64_t headerCount(MshDecoder& in, std::size_t minBytesEach) {
@@ -43,15 +51,16 @@ ElementHeader readTags(MshDecoder& in, ElementType type, int tagCount) {
 void addElement(MshDecoder& in, MshReadState& state, const ElementHeader& h) {
   const EntityId entity{dimension(h.type), h.entity};
   const int n = nodeCount(h.type);
-  NodeIndex nodes[27];
+  std::array<NodeIndex, kMaxElementNodes> nodes;
   for (int k = 0; k < n; ++k) {
     const int tag = in.integer();
     if (tag <= 0) in.fail("invalid node tag " + std::to_string(tag));
     nodes[k] = state.node(in, static_cast<std::uint64_t>(tag));
   }
   ElementBlock& block = state.mesh.entity(entity).block(h.type);
-  const bool repeat = block.size() > 0 && std::equal(nodes, nodes + n, block.nodes.end() - n);
-  if (!repeat) block.nodes.insert(block.nodes.end(), nodes, nodes + n);
+  const bool repeat =
+      block.size() > 0 && std::equal(nodes.begin(), nodes.begin() + n, block.nodes.end() - n);
+  if (!repeat) block.nodes.insert(block.nodes.end(), nodes.begin(), nodes.begin() + n);
   if (h.physical != 0) state.addToPhysical(entity.dim, h.physical, entity.tag);
 }
 

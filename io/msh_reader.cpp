@@ -23,9 +23,9 @@ NodeIndex MshReadState::node(MshDecoder& in, std::uint64_t tag) const {
 }
 
 ElementType MshReadState::elementType(MshDecoder& in, int number) {
-  if (number < 1 || number > static_cast<int>(ElementType::Pyramid13))
-    in.fail("unsupported element type " + std::to_string(number));
-  return static_cast<ElementType>(number);
+  const std::optional<ElementType> type = elementTypeFromNumber(number);
+  if (!type) in.fail("unsupported element type " + std::to_string(number));
+  return *type;
 }
 
 void MshReadState::checkDimension(MshDecoder& in, int dim) {

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <array>
-#include <initializer_list>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
+#include <map>
 #include <tuple>
 
+#include "mesh/checks/high_order_check.h"
 #include "mesh/structured/periodic.h"
 
 namespace geomesh {
@@ -67,6 +69,10 @@ class Checker {
 
   MeshCheckReport run() {
     checkIndicesAndOwnership();
+    if (hasHighOrderElements(mesh_)) {
+      corners_ = cornerMeshes(mesh_);
+      checkEdgeNodes(mesh_, kMaxProblemsPerCheck, report_.problems);
+    }
     checkDuplicates();
     for (const auto& [tag, point] : model_.points()) checkPoint(point);
     for (const auto& [tag, curve] : model_.curves()) checkCurve(curve);
@@ -77,6 +83,13 @@ class Checker {
   }
 
  private:
+  // An entity's mesh as the checks see it: high-order elements cut down to their corners (the
+  // nodes inside their edges, faces and cells are checked as held nodes only).
+  const EntityMesh* find(EntityId e) const {
+    const auto it = corners_.find(e);
+    return it != corners_.end() ? &it->second : mesh_.find(e);
+  }
+
   void problem(EntityId e, std::string message) {
     report_.problems.push_back({e, std::move(message)});
   }
@@ -125,7 +138,7 @@ class Checker {
 
   void checkPoint(const ModelPoint& point) {
     const EntityId id{0, point.tag};
-    const EntityMesh* em = mesh_.find(id);
+    const EntityMesh* em = find(id);
     if (!em) return;
     if (em->nodes.size() != 1) return problem(id, "does not own exactly one node");
     if (em->nodes[0] < mesh_.nodeCount() &&
@@ -135,7 +148,7 @@ class Checker {
 
   void checkCurve(const ModelCurve& curve) {
     const EntityId id{1, curve.tag};
-    const EntityMesh* em = mesh_.find(id);
+    const EntityMesh* em = find(id);
     if (!em) return;  // not meshed (dimension 0 only)
     const ElementBlock* lines = em->findBlock(ElementType::Line2);
     const bool degenerate = curve.geometry && curve.geometry->isDegenerate();
@@ -143,8 +156,8 @@ class Checker {
     if (!lines || lines->size() == 0) return problem(id, "has no line elements");
     // End points of tag 0 are unknown: the curve was read from a file without topology.
     if (curve.startPoint != 0 || curve.endPoint != 0) {
-      const EntityMesh* start = mesh_.find({0, curve.startPoint});
-      const EntityMesh* end = mesh_.find({0, curve.endPoint});
+      const EntityMesh* start = find({0, curve.startPoint});
+      const EntityMesh* end = find({0, curve.endPoint});
       if (!start || !end || start->nodes.empty() || end->nodes.empty())
         return problem(id, "end points have no mesh nodes");
       if (lines->nodes.front() != start->nodes.front() ||
@@ -168,7 +181,7 @@ class Checker {
   std::vector<std::pair<std::uint64_t, int>> expectedBoundary(const ModelSurface& surface) const {
     std::vector<std::pair<std::uint64_t, int>> expected;
     auto add = [&](int signedTag, int uses) {
-      const EntityMesh* em = mesh_.find({1, std::abs(signedTag)});
+      const EntityMesh* em = find({1, std::abs(signedTag)});
       const ElementBlock* lines = em ? em->findBlock(ElementType::Line2) : nullptr;
       if (!lines) return;
       for (std::size_t e = 0; e < lines->size(); ++e)
@@ -226,7 +239,7 @@ class Checker {
     const std::uint32_t stamp = ++stamp_;
     allowedStamp_.resize(mesh_.nodeCount(), 0);
     auto allowEntity = [&](EntityId e) {
-      if (const EntityMesh* m = mesh_.find(e))
+      if (const EntityMesh* m = find(e))
         for (NodeIndex n : m->nodes) allowedStamp_[n] = stamp;
     };
     auto allowed = [&](NodeIndex n) { return allowedStamp_[n] == stamp; };
@@ -317,7 +330,7 @@ class Checker {
 
   void checkSurface(const ModelSurface& surface) {
     const EntityId id{2, surface.tag};
-    const EntityMesh* em = mesh_.find(id);
+    const EntityMesh* em = find(id);
     if (!em) return;
     // Cut along the diagonal that recombination did not join across (corners 1 and 3), so
     // that a quadrangle straddling a curve edge shows.
@@ -333,8 +346,9 @@ class Checker {
   }
 
   void checkVolumes() {
-    for (const auto& [id, em] : mesh_.entities()) {
+    for (const auto& [id, original] : mesh_.entities()) {
       if (id.dim != 3) continue;
+      const EntityMesh& em = *find(id);
       bool inRange = true;
       for (const ElementBlock& block : em.blocks)
         for (NodeIndex n : block.nodes) inRange = inRange && n < mesh_.nodeCount();
@@ -426,7 +440,7 @@ class Checker {
     std::vector<Face> boundary;
     for (const std::vector<int>& shell : volume.shells)
       for (int s : shell)
-        if (const EntityMesh* sm = mesh_.find({2, std::abs(s)}))
+        if (const EntityMesh* sm = find({2, std::abs(s)}))
           for (const ElementBlock& block : sm->blocks)
             for (std::size_t e = 0; e < block.size(); ++e) {
               const auto n = block.element(e);
@@ -444,7 +458,10 @@ class Checker {
       std::size_t run = k;
       while (run < faces.size() && faces[run] == faces[k]) ++run;
       const bool onBoundary = std::binary_search(boundary.begin(), boundary.end(), faces[k]);
-      if (run - k != (onBoundary ? 1u : 2u))
+      // A volume read from a file without topology (MSH 2.2) has no known boundary: there, a
+      // face may bound one element (the boundary) or two.
+      const bool allowed = volume.shells.empty() ? run - k <= 2 : run - k == (onBoundary ? 1u : 2u);
+      if (!allowed)
         report("an element face at node " + nodeName(faces[k][0]) + " is shared by " +
                std::to_string(run - k) + " elements" + (onBoundary ? " on the boundary" : ""));
       k = run;
@@ -491,6 +508,7 @@ class Checker {
 
   const Model& model_;
   const Mesh& mesh_;
+  std::map<EntityId, EntityMesh> corners_;  // of the entities with high-order elements
   double tolerance_ = 0;
   std::vector<std::uint32_t> allowedStamp_;
   std::uint32_t stamp_ = 0;

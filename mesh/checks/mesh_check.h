@@ -31,9 +31,12 @@ struct MeshCheckReport {
 //    edges exactly the segments of the boundary curves (embedded curves: two triangles each);
 //    triangles only use nodes of the surface and its closure; nodes on the surface;
 //  - volumes: tetrahedra, prisms, pyramids and hexahedra with a positive Jacobian at every
-//    corner; in volumes with any but tetrahedra, each element face shared by two elements or equal to a
-//    triangle or quadrangle of a boundary surface, and each of those a face of an element;
-//  - periodic entities: each node paired with a master node is that node's affine image.
+//    corner; in volumes with any but tetrahedra, each element face shared by two elements or
+//    equal to a triangle or quadrangle of a boundary surface, and each of those a face of an
+//    element (without known boundary surfaces, as read from MSH 2.2: by one or two elements);
+//  - periodic entities: each node paired with a master node is that node's affine image;
+//  - high-order elements: every check above on their corners (the first vertexCount nodes), the
+//    other nodes held like any node; elements sharing an edge have the same nodes inside it.
 MeshCheckReport checkMesh(const Model& model, const Mesh& mesh);
 
 }  // namespace geomesh

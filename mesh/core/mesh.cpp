@@ -1,34 +1,9 @@
-// Element names, and the lookup of element blocks and entity meshes in a Mesh.
+// The lookup of element blocks and entity meshes in a Mesh.
 #include "mesh/core/mesh.h"
 
 #include <algorithm>
 
 namespace geomesh {
-
-const char* elementName(ElementType t) {
-  switch (t) {
-    case ElementType::Point1: return "point";
-    case ElementType::Line2: return "line";
-    case ElementType::Line3: return "line3";
-    case ElementType::Triangle3: return "triangle";
-    case ElementType::Triangle6: return "triangle6";
-    case ElementType::Quad4: return "quadrangle";
-    case ElementType::Quad8: return "quadrangle8";
-    case ElementType::Quad9: return "quadrangle9";
-    case ElementType::Tet4: return "tetrahedron";
-    case ElementType::Tet10: return "tetrahedron10";
-    case ElementType::Hex8: return "hexahedron";
-    case ElementType::Hex20: return "hexahedron20";
-    case ElementType::Hex27: return "hexahedron27";
-    case ElementType::Prism6: return "prism";
-    case ElementType::Prism15: return "prism15";
-    case ElementType::Prism18: return "prism18";
-    case ElementType::Pyramid5: return "pyramid";
-    case ElementType::Pyramid13: return "pyramid13";
-    case ElementType::Pyramid14: return "pyramid14";
-  }
-  return "unknown";
-}
 
 ElementBlock& EntityMesh::block(ElementType type) {
   for (ElementBlock& b : blocks)

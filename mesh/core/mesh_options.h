@@ -17,6 +17,12 @@ struct MeshOptions {
   int algorithm3D = 1;       // Mesh.Algorithm3D
   int smoothing = 1;         // Mesh.Smoothing
   int elementOrder = 1;      // Mesh.ElementOrder
+  bool secondOrderLinear = false;      // Mesh.SecondOrderLinear: high-order nodes on straight edges
+  bool secondOrderIncomplete = false;  // Mesh.SecondOrderIncomplete: serendipity elements
+  int highOrderOptimize = 0;           // Mesh.HighOrderOptimize (0 none, 1..4 repair methods)
+  double highOrderThresholdMin = 0.1;  // Mesh.HighOrderThresholdMin: scaled Jacobian to reach
+  double highOrderThresholdMax = 2;    // Mesh.HighOrderThresholdMax
+  int highOrderNumLayers = 6;          // Mesh.HighOrderNumLayers: layers around a bad element
   int numThreads = 1;        // General.NumThreads
   double randomFactor = 1e-9;  // Mesh.RandomFactor
   bool recombineAll = false;       // Mesh.RecombineAll

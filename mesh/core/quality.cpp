@@ -83,24 +83,26 @@ double tetSicn(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 QualityStats meshQuality(const Mesh& mesh, int dim, QualityMeasure measure) {
   QualityStats stats;
   double sum = 0, lowest = 1e300;
-  const ElementType type = dim == 2 ? ElementType::Triangle3 : ElementType::Tet4;
+  const ElementFamily wanted = dim == 2 ? ElementFamily::Triangle : ElementFamily::Tet;
   for (const auto& [id, em] : mesh.entities()) {
-    const ElementBlock* block = em.findBlock(type);
-    if (!block) continue;
-    for (std::size_t e = 0; e < block->size(); ++e) {
-      const auto n = block->element(e);
-      double q;
-      if (dim == 2) {
-        const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
-        q = measure == QualityMeasure::Gamma ? triangleGamma(a, b, c) : triangleSicn(a, b, c);
-      } else {
-        const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]),
-                   d = mesh.node(n[3]);
-        q = measure == QualityMeasure::Gamma ? tetGamma(a, b, c, d) : tetSicn(a, b, c, d);
+    for (const ElementBlock& block : em.blocks) {
+      if (family(block.type) != wanted) continue;
+      // Elements of any order, measured on their corners (their first nodes).
+      for (std::size_t e = 0; e < block.size(); ++e) {
+        const auto n = block.element(e);
+        double q;
+        if (dim == 2) {
+          const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
+          q = measure == QualityMeasure::Gamma ? triangleGamma(a, b, c) : triangleSicn(a, b, c);
+        } else {
+          const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]),
+                     d = mesh.node(n[3]);
+          q = measure == QualityMeasure::Gamma ? tetGamma(a, b, c, d) : tetSicn(a, b, c, d);
+        }
+        sum += q;
+        lowest = std::min(lowest, q);
+        ++stats.count;
       }
-      sum += q;
-      lowest = std::min(lowest, q);
-      ++stats.count;
     }
   }
   if (stats.count > 0) stats.min = lowest, stats.mean = sum / static_cast<double>(stats.count);
@@ -121,17 +123,18 @@ double prismVolume(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e, Vec3 f) {
 double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIndex> nodes) {
   auto p = [&](int i) { return mesh.node(nodes[i]); };
   auto triangleArea = [](Vec3 a, Vec3 b, Vec3 c) { return 0.5 * norm(cross(b - a, c - a)); };
-  switch (type) {
-    case ElementType::Line2: return distance(p(0), p(1));
-    case ElementType::Triangle3: return triangleArea(p(0), p(1), p(2));
-    case ElementType::Quad4: return triangleArea(p(0), p(1), p(2)) + triangleArea(p(0), p(2), p(3));
-    case ElementType::Tet4: return std::abs(tetVolume6(p(0), p(1), p(2), p(3))) / 6;
-    case ElementType::Prism6: return prismVolume(p(0), p(1), p(2), p(3), p(4), p(5));
-    case ElementType::Pyramid5:
+  switch (family(type)) {
+    case ElementFamily::Line: return distance(p(0), p(1));
+    case ElementFamily::Triangle: return triangleArea(p(0), p(1), p(2));
+    case ElementFamily::Quad:
+      return triangleArea(p(0), p(1), p(2)) + triangleArea(p(0), p(2), p(3));
+    case ElementFamily::Tet: return std::abs(tetVolume6(p(0), p(1), p(2), p(3))) / 6;
+    case ElementFamily::Prism: return prismVolume(p(0), p(1), p(2), p(3), p(4), p(5));
+    case ElementFamily::Pyramid:
       return (std::abs(tetVolume6(p(0), p(1), p(2), p(4))) +
               std::abs(tetVolume6(p(0), p(2), p(3), p(4)))) /
              6;
-    case ElementType::Hex8:
+    case ElementFamily::Hex:
       return prismVolume(p(0), p(1), p(2), p(4), p(5), p(6)) +
              prismVolume(p(0), p(2), p(3), p(4), p(6), p(7));
     default: return 0;

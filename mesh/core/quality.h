@@ -28,12 +28,14 @@ struct QualityStats {
   double min = 0, mean = 0;
 };
 
-// Statistics over all linear triangles (dim 2) or tetrahedra (dim 3) of the mesh; triangle
-// SICN is unsigned here (a Mesh alone does not know which side of a surface is up).
+// Statistics over all triangles (dim 2) or tetrahedra (dim 3) of the mesh, of any order, each
+// measured as the first-order element of its corners; triangle SICN is unsigned here (a Mesh
+// alone does not know which side of a surface is up).
 QualityStats meshQuality(const Mesh& mesh, int dim, QualityMeasure measure);
 
-// Length, area or volume of one first-order element (Line2, Triangle3, Quad4 split along its
-// first diagonal, Tet4); 0 for other types.
+// Length, area or volume of the first-order element of an element's corners (its first
+// vertexCount nodes), whatever its order: lines, triangles, quadrangles split along their first
+// diagonal, tetrahedra, prisms, pyramids and hexahedra (cut into tetrahedra); 0 for points.
 double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIndex> nodes);
 
 }  // namespace geomesh

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "mesh/curves/curve_mesher.h"
+#include "mesh/high_order/set_order.h"
 #include "mesh/structured/extrusion_mesher.h"
 #include "mesh/structured/meshing_order.h"
 #include "mesh/sizes/size_field.h"
@@ -228,9 +229,8 @@ bool hasOnlyTetrahedra(const Mesh& mesh) {
 void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
                   MessageSink& log) {
   mesh.clear();
-  if (options.elementOrder > 1)
-    log.warning("Mesh.ElementOrder " + std::to_string(options.elementOrder) +
-                ": high-order elements are not supported yet; the mesh is first order");
+  if (const std::string why = unsupportedOrderReason(options.elementOrder); !why.empty())
+    throw std::invalid_argument("Mesh.ElementOrder: " + why);
   SizeRules rules = SizeRules::from(model, options);
   // Full-quad recombination (of every surface, or of those asked for) meshes twice as coarse,
   // then splits each element into quadrangles, which halves the sizes back.
@@ -281,6 +281,19 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     extruded.meshVolumes(mesh);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
   }
+  if (options.elementOrder > 1 && dim >= 1) raiseOrder(model, options, mesh, log);
+}
+
+void raiseOrder(const Model& model, const MeshOptions& options, Mesh& mesh, MessageSink& log) {
+  const auto start = std::chrono::steady_clock::now();
+  const HighOrderSummary summary = setOrder(model, options, mesh, log);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char line[160];
+  std::snprintf(line, sizeof line, "Meshing order %d (%s)... done (%.3g s, %zu nodes added)",
+                options.elementOrder, options.secondOrderLinear ? "straight" : "curved",
+                seconds, summary.nodesAdded);
+  log.info(line);
 }
 
 }  // namespace geomesh

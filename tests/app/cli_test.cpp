@@ -222,6 +222,45 @@ $EndElements
   EXPECT_NE(err_.str().find("surface 1"), std::string::npos) << err_.str();
 }
 
+// The unit square as two second-order triangles bounded by four second-order lines; `node2`
+// is where the node of the edge from (0, 0) to (1, 0) goes (its midpoint when straight).
+std::string squareOfTriangle6(const std::string& node2) {
+  return "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+         "$Entities\n0 4 1 0\n1 0 0 0 1 0 0 0 0\n2 1 0 0 1 1 0 0 0\n3 0 1 0 1 1 0 0 0\n"
+         "4 0 0 0 0 1 0 0 0\n1 0 0 0 1 1 0 0 4 1 2 3 4\n$EndEntities\n"
+         "$Nodes\n1 9 1 9\n2 1 0 9\n1\n2\n3\n4\n5\n6\n7\n8\n9\n0 0 0\n" +
+         node2 +
+         "\n1 0 0\n0 0.5 0\n0.5 0.5 0\n1 0.5 0\n0 1 0\n0.5 1 0\n1 1 0\n$EndNodes\n"
+         "$Elements\n5 6 1 6\n1 1 8 1\n1 1 3 2\n1 2 8 1\n2 3 9 6\n1 3 8 1\n3 9 7 8\n"
+         "1 4 8 1\n4 7 1 4\n2 1 9 2\n5 1 3 9 2 6 5\n6 1 9 7 5 8 4\n$EndElements\n";
+}
+
+TEST_F(Cli, CheckReportsTheScaledJacobianOfACurvedMesh) {
+  fs::path msh = write("p2.msh", squareOfTriangle6("0.5 -0.1 0"));
+  EXPECT_EQ(run({msh.string(), "-check"}), 0) << err_.str();
+  EXPECT_NE(err_.str().find("curved elements: scaled Jacobian min"), std::string::npos)
+      << err_.str();
+  EXPECT_NE(err_.str().find(", 0 invalid"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("no problem"), std::string::npos) << err_.str();
+  // Area of the square plus the parabolic bulge below its bottom edge: (2/3) 1 0.1.
+  EXPECT_NE(err_.str().find("area 1.06667"), std::string::npos) << err_.str();
+}
+
+TEST_F(Cli, CheckFailsOnAnInvalidCurvedElement) {
+  // The edge node pulled across the opposite vertex (1, 1): its triangle folds, and its
+  // boundary line runs backwards.
+  fs::path msh = write("p2bad.msh", squareOfTriangle6("1.1 1.3 0"));
+  EXPECT_EQ(run({msh.string(), "-check"}), 1);
+  EXPECT_NE(err_.str().find("2 invalid curved element(s)"), std::string::npos) << err_.str();
+  EXPECT_EQ(err_.str().find("no problem"), std::string::npos) << err_.str();
+}
+
+TEST_F(Cli, FirstOrderMeshesPrintNoCurvedLine) {
+  fs::path geo = write("sq.geo", kSquare);
+  ASSERT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.msh").string()}), 0);
+  EXPECT_EQ(err_.str().find("scaled Jacobian"), std::string::npos) << err_.str();
+}
+
 TEST_F(Cli, MalformedMeshFileIsAnErrorWithItsLine) {
   fs::path msh = write("broken.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2\n");
   EXPECT_EQ(run({msh.string(), "-check"}), 1);

@@ -62,6 +62,10 @@ bool figure(const MeshSummary& s, const std::string& key, double& value) {
     value = s.minQuality;
   } else if (key == "quality.mean") {
     value = s.meanQuality;
+  } else if (key == "jacobian.min") {
+    value = s.minScaledJacobian;
+  } else if (key == "jacobian.invalid") {
+    value = static_cast<double>(s.invalidElements);
   } else if (key == "groups") {
     value = static_cast<double>(s.physicalGroups.size());
   } else if (key == "elements.total") {

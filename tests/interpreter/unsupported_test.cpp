@@ -15,7 +15,6 @@ constexpr const char* kStatements[] = {
     "Reverse Surface{1};",
     "Save \"x.png\";",
     "RefineMesh;",
-    "SetOrder 2;",
     "Merge \"whatever.stl\";",
     "Background Mesh View[0];",
     "Periodic Surface{2} = {1};",

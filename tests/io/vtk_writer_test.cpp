@@ -124,13 +124,14 @@ TEST(VtkWriter, VolumeCellTypes) {
   EXPECT_NE(vtk.find("\nPOINTS 9 double\n"), std::string::npos) << vtk;
 }
 
-TEST(VtkWriter, HigherOrderElementsAreRefused) {
+TEST(VtkWriter, ElementsAboveOrderTwoAreRefusedBeforeAnythingIsWritten) {
   Model model;
   Mesh mesh;
   buildSquare(model, mesh, false);
-  const NodeIndex mid = mesh.addNode({0.5, 0, 0});
-  mesh.entity({1, 1}).nodes.push_back(mid);
-  mesh.entity({1, 1}).block(ElementType::Line3).nodes = {0, 1, mid};
+  const NodeIndex a = mesh.addNode({1.0 / 3, 0, 0});
+  const NodeIndex b = mesh.addNode({2.0 / 3, 0, 0});
+  mesh.entity({1, 1}).nodes.insert(mesh.entity({1, 1}).nodes.end(), {a, b});
+  mesh.entity({1, 1}).block(ElementType::Line4).nodes = {0, 1, a, b};
   std::ostringstream out;
   EXPECT_THROW(findFormatByName("vtk")->write(out, model, mesh, {}), std::invalid_argument);
   EXPECT_EQ(out.str(), "");

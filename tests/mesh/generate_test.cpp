@@ -73,19 +73,31 @@ TEST(GenerateMesh, UnavailableSurfaceAlgorithmIsAWarning) {
   EXPECT_GT(mesh.elementCount(2), 0u);
 }
 
-TEST(GenerateMesh, HighOrderIsAWarningAndTheMeshStaysFirstOrder) {
+TEST(GenerateMesh, ElementOrderTwoEndsWithAnOrderLineAndQuadraticElements) {
   const Model model = squareModel(0.1);
   Mesh mesh;
   RecordingSink log;
   MeshOptions options;
   options.elementOrder = 2;
   generateMesh(model, options, 2, mesh, log);
-  ASSERT_FALSE(log.lines.empty());
-  EXPECT_EQ(log.lines[0],
-            "Mesh.ElementOrder 2: high-order elements are not supported yet; the mesh is first "
-            "order");
-  EXPECT_GT(mesh.elementCount(2), 0u);
+  ASSERT_EQ(log.lines.size(), 3u);
+  EXPECT_EQ(log.lines[2].rfind("Meshing order 2 (curved)... done (", 0), 0u);
+  const EntityMesh* surface = mesh.find({2, 1});
+  ASSERT_NE(surface, nullptr);
+  ASSERT_EQ(surface->blocks.size(), 1u);
+  EXPECT_EQ(surface->blocks[0].type, ElementType::Triangle6);
   EXPECT_TRUE(checkMesh(model, mesh).ok());
+}
+
+TEST(GenerateMesh, UnsupportedElementOrderFailsBeforeMeshing) {
+  const Model model = squareModel(0.1);
+  Mesh mesh;
+  RecordingSink log;
+  MeshOptions options;
+  options.elementOrder = 5;
+  EXPECT_THROW(generateMesh(model, options, 2, mesh, log), std::invalid_argument);
+  EXPECT_TRUE(log.lines.empty());
+  EXPECT_EQ(mesh.nodeCount(), 0u);
 }
 
 TEST(GenerateMesh, ReplacesThePreviousMesh) {

@@ -1,0 +1,6 @@
+// Legacy VTK holds elements up to order 2: asking for order 3 in a .vtk file fails before
+// anything is meshed, naming the file and the limit.
+Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {0, 1, 0, 0.5};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
+Curve Loop(1) = {1, 2, 3};
+Plane Surface(1) = {1};
