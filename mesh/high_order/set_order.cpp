@@ -10,6 +10,7 @@
 #include "mesh/core/mesh_error.h"
 #include "mesh/high_order/curved_repair.h"
 #include "mesh/high_order/reference_element.h"
+#include "mesh/high_order/shape_functions.h"
 
 namespace geomesh {
 namespace {
@@ -77,8 +78,11 @@ class Elevator {
       nodes.reserve(elements * ref.xi.size());
       for (std::size_t e = 0; e < elements; ++e) {
         const std::span<const NodeIndex> c = block.element(e).first(corners);
-        for (std::size_t k = 0; k < ref.places.size(); ++k)
-          nodes.push_back(nodeAt(ref, k, c, support, em, onGeometry));
+        const std::size_t first = nodes.size();
+        for (std::size_t k = 0; k < ref.places.size(); ++k) {
+          const std::span<const NodeIndex> made(nodes.data() + first, k);
+          nodes.push_back(nodeAt(ref, k, c, made, support, em, onGeometry));
+        }
       }
       block.type = to;
       block.nodes = std::move(nodes);
@@ -109,17 +113,40 @@ class Elevator {
     return s;
   }
 
+  // Node k of an element whose nodes before k are `made`.
   NodeIndex nodeAt(const ReferenceElement& ref, std::size_t k, std::span<const NodeIndex> corners,
-                   Support& support, EntityMesh& em, bool& onGeometry) {
+                   std::span<const NodeIndex> made, Support& support, EntityMesh& em,
+                   bool& onGeometry) {
     const NodePlace& place = ref.places[k];
     if (place.kind == NodePlace::Vertex) return corners[place.corners[0]];
     if (place.kind == NodePlace::Cell)
-      return addNode(em, straightCell(ref.family, ref.xi[k], corners), std::nullopt, onGeometry);
+      return addNode(em, blended(ref, k, corners, made), std::nullopt, onGeometry);
     const SharedKey key = keyOf(place, corners);
     if (auto it = shared_.find(key); it != shared_.end()) return it->second;
-    const NodeIndex node = placeOn(support, place, corners, em, onGeometry);
+    const Vec3 guess = place.kind == NodePlace::Face ? blended(ref, k, corners, made)
+                                                     : straightPoint(place, corners);
+    const NodeIndex node = placeOn(support, place, corners, guess, em, onGeometry);
     shared_.emplace(key, node);
     return node;
+  }
+
+  // Where a face or inside node goes when the element's edges are curved: its straight
+  // position moved by the edges' displacements, interpolated by the shape functions of the
+  // serendipity element (vertex and edge nodes only) of the same order.
+  Vec3 blended(const ReferenceElement& ref, std::size_t k, std::span<const NodeIndex> corners,
+               std::span<const NodeIndex> made) const {
+    const Vec3 straight = straightCell(ref.family, ref.xi[k], corners);
+    if (options_.secondOrderLinear) return straight;
+    const std::optional<ElementType> edgesOnly = elementTypeOf(ref.family, ref.order, true);
+    if (!edgesOnly || !isSerendipity(*edgesOnly) || nodeCount(*edgesOnly) > int(made.size()))
+      return straight;
+    const ShapeFunctions& shape = shapeFunctions(*edgesOnly);
+    std::vector<double> n(shape.size());
+    shape.values(ref.xi[k], n);
+    Vec3 shift{0, 0, 0};
+    for (int j = vertexCount(ref.family); j < shape.size(); ++j)
+      shift += n[j] * (mesh_.node(made[j]) - straightCell(ref.family, ref.xi[j], corners));
+    return straight + shift;
   }
 
   Vec3 straightPoint(const NodePlace& place, std::span<const NodeIndex> corners) const {
@@ -138,9 +165,9 @@ class Elevator {
     return x;
   }
 
+  // A node on an edge or a face, near `straight` (its straight or blended position).
   NodeIndex placeOn(Support& s, const NodePlace& place, std::span<const NodeIndex> corners,
-                    EntityMesh& em, bool& onGeometry) {
-    const Vec3 straight = straightPoint(place, corners);
+                    Vec3 straight, EntityMesh& em, bool& onGeometry) {
     if (s.curve) {
       if (const std::optional<double> t = curveParameter(s, place, corners))
         return addNode(em, s.curve->point(*t), std::vector<double>{*t}, onGeometry);
@@ -193,8 +220,8 @@ class Elevator {
     return pm && !pm->nodes.empty() && pm->nodes.front() == node;
   }
 
-  // Interpolated from the corners' parameters when they are all known and the result lands
-  // near the straight position (not across a seam); else the straight position projected.
+  // Interpolated from the corners' parameters when they are all known, else the straight
+  // position projected.
   Vec2 surfaceParameter(const Support& s, const NodePlace& place,
                         std::span<const NodeIndex> corners, Vec3 straight) const {
     Vec2 uv{0, 0};
@@ -210,8 +237,13 @@ class Elevator {
         size = std::max(size, distance(mesh_.node(n), straight));
       }
     }
-    if (known && distance(s.surface->point(uv), straight) <= 0.5 * size) return uv;
-    return s.surface->project(straight);
+    // A node off the straight position by more than a small fraction of the element size is
+    // suspect (a pole or a seam between the corners); the closest surface point is then taken.
+    if (!known) return s.surface->project(straight);
+    const double off = distance(s.surface->point(uv), straight);
+    if (off <= 0.05 * size) return uv;
+    const Vec2 projected = s.surface->project(straight);
+    return distance(s.surface->point(projected), straight) < off ? projected : uv;
   }
 
   NodeIndex addNode(EntityMesh& em, Vec3 x, std::optional<std::vector<double>> parameters,
