@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/high_order/per_type.h"
 #include "mesh/high_order/bernstein.h"
 #include "mesh/high_order/shape_functions.h"
 
@@ -21,17 +22,6 @@ namespace {
 
 using Point = std::array<double, 3>;
 using Gradient = std::array<double, 3>;
-
-// A table built once per element type and then shared by every thread.
-template <class Table>
-const Table& perType(ElementType type) {
-  constexpr std::size_t kSlots = 256;
-  static std::array<std::once_flag, kSlots> once;
-  static std::array<std::unique_ptr<Table>, kSlots> built;
-  const auto slot = static_cast<std::size_t>(type);
-  std::call_once(once[slot], [&] { built[slot] = std::make_unique<Table>(type); });
-  return *built[slot];
-}
 
 // Shape function gradients at a list of reference points, node-fastest.
 std::vector<Gradient> gradientsAt(ElementType type, std::span<const Point> points) {

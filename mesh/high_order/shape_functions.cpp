@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mesh/high_order/per_type.h"
 #include "mesh/high_order/dense_inverse.h"
 #include "mesh/high_order/reference_element.h"
 
@@ -143,14 +144,6 @@ void ShapeFunctions::gradients(const std::array<double, 3>& xi,
   }
 }
 
-const ShapeFunctions& shapeFunctions(ElementType type) {
-  // One slot per MSH type number; each is built once, then read without a lock.
-  constexpr std::size_t kSlots = 256;
-  static std::array<std::once_flag, kSlots> once;
-  static std::array<std::unique_ptr<ShapeFunctions>, kSlots> built;
-  const auto slot = static_cast<std::size_t>(type);
-  std::call_once(once[slot], [&] { built[slot] = std::make_unique<ShapeFunctions>(type); });
-  return *built[slot];
-}
+const ShapeFunctions& shapeFunctions(ElementType type) { return perType<ShapeFunctions>(type); }
 
 }  // namespace geomesh
