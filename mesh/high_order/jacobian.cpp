@@ -295,6 +295,11 @@ double jacobianDeterminant(ElementType type, std::span<const Vec3> nodes, const 
 JacobianRange jacobianRange(ElementType type, std::span<const Vec3> nodes) {
   requireNodes(type, nodes);
   if (dimension(type) == 0) return {1, 1};
+  // A node at no finite place (a damaged file) makes no element: no search for a bound.
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  for (const Vec3& x : nodes)
+    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
+      return {-kInfinity, kInfinity};
   const Frame frame = frameOf(type, nodes);
   const std::size_t n = nodes.size();
   if (family(type) == ElementFamily::Pyramid) {
@@ -318,6 +323,7 @@ JacobianRange jacobianRange(ElementType type, std::span<const Vec3> nodes) {
 
 double scaledJacobian(ElementType type, std::span<const Vec3> nodes) {
   const JacobianRange r = jacobianRange(type, nodes);
+  if (!std::isfinite(r.min) || !std::isfinite(r.max)) return -1;
   const double scale = std::max(std::abs(r.min), std::abs(r.max));
   return scale > 0 ? r.min / scale : 0;
 }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -175,6 +177,19 @@ TEST(Jacobian, SurfaceElementsInSpaceUseTheirOwnNormal) {
   const std::vector<Vec3> nodes{{0, 0, 1}, {0, 1, 1}, {1, 0, 1}};
   EXPECT_NEAR(scaledJacobian(ElementType::Triangle3, nodes), 1, 1e-14);
   EXPECT_NEAR(elementMeasure(ElementType::Triangle3, nodes), 0.5, 1e-14);
+}
+
+}  // namespace
+}  // namespace geomesh
+
+namespace geomesh {
+namespace {
+
+TEST(JacobianRangeOfDamagedNodes, ANodeAtNoFinitePlaceMakesTheElementInvalid) {
+  std::vector<Vec3> nodes{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0, 0}, {0.5, 0.5, 0},
+                          {0, std::numeric_limits<double>::quiet_NaN(), 0}};
+  EXPECT_LT(jacobianRange(ElementType::Triangle6, nodes).min, 0);
+  EXPECT_LE(scaledJacobian(ElementType::Triangle6, nodes), 0);
 }
 
 }  // namespace
