@@ -51,41 +51,28 @@ class CurvedElements {
   }
   int dim(std::size_t e) const { return dimension(type(e)); }
 
-  double scaledJacobian(std::size_t e) const {
+  std::vector<Vec3> points(std::size_t e) const {
     std::vector<Vec3> x;
     for (NodeIndex n : nodes(e)) x.push_back(mesh_.node(n));
-    const JacobianRange r = jacobianRange(type(e), x);
-    if (r.max <= 0) return r.min < 0 ? -1 : 0;
-    return r.min / r.max;
+    return x;
   }
+  double scaledJacobian(std::size_t e) const { return geomesh::scaledJacobian(type(e), points(e)); }
+  bool isCurved(std::size_t e) const { return !isStraight(type(e), points(e)); }
 
   // Where high-order node k of element e sits on its straight (first-order) element.
   Vec3 straightPosition(std::size_t e, std::size_t k) const {
     const ReferenceElement& ref = referenceElement(type(e));
-    double n[8];
-    linearShapeFunctions(ref.family, ref.xi[k], n);
-    const std::span<const NodeIndex> c = nodes(e);
-    Vec3 x{0, 0, 0};
-    for (int v = 0; v < vertexCount(ref.family); ++v) x += mesh_.node(c[v]) * n[v];
-    return x;
-  }
-
-  bool isCurved(std::size_t e) const {
-    const std::span<const NodeIndex> c = nodes(e);
-    const int v = vertexCount(type(e));
-    double size = 0;
-    for (int k = 1; k < v; ++k) size = std::max(size, distance(mesh_.node(c[0]), mesh_.node(c[k])));
-    for (std::size_t k = v; k < c.size(); ++k)
-      if (distance(mesh_.node(c[k]), straightPosition(e, k)) > 1e-12 * size) return true;
-    return false;
+    return linearImage(ref.family, ref.xi[k], points(e));
   }
 
   // Puts every high-order node of e on the straight element; returns the nodes moved.
   std::vector<NodeIndex> straighten(std::size_t e) {
     std::vector<NodeIndex> moved;
     const std::span<const NodeIndex> c = nodes(e);
+    const ReferenceElement& ref = referenceElement(type(e));
+    const std::vector<Vec3> now = points(e);
     for (std::size_t k = vertexCount(type(e)); k < c.size(); ++k) {
-      const Vec3 x = straightPosition(e, k);
+      const Vec3 x = linearImage(ref.family, ref.xi[k], now);
       if (mesh_.node(c[k]) == x) continue;
       mesh_.setNode(c[k], x);
       moved.push_back(c[k]);

@@ -6,14 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
-#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "mesh/high_order/per_type.h"
+#include "mesh/high_order/reference_element.h"
 #include "mesh/high_order/bernstein.h"
 #include "mesh/high_order/shape_functions.h"
 
@@ -276,6 +275,10 @@ struct MeasureRule {
   }
 };
 
+bool isSimplex(ElementFamily f) {
+  return f == ElementFamily::Line || f == ElementFamily::Triangle || f == ElementFamily::Tet;
+}
+
 void requireNodes(ElementType type, std::span<const Vec3> nodes) {
   if (static_cast<int>(nodes.size()) != nodeCount(type))
     throw std::invalid_argument(std::string(elementName(type)) + " needs " +
@@ -290,6 +293,19 @@ double jacobianDeterminant(ElementType type, std::span<const Vec3> nodes, const 
   std::vector<Gradient> g(nodes.size());
   shapeFunctions(type).gradients(xi, g);
   return determinant(frameOf(type, nodes), nodes, g.data());
+}
+
+bool isStraight(ElementType type, std::span<const Vec3> nodes) {
+  requireNodes(type, nodes);
+  const ReferenceElement& ref = referenceElement(type);
+  const std::size_t v = vertexCount(type);
+  const std::span<const Vec3> corners = nodes.first(v);
+  double size = 0;
+  for (std::size_t k = 1; k < v; ++k) size = std::max(size, distance(corners[0], corners[k]));
+  for (std::size_t k = v; k < nodes.size(); ++k)
+    if (distance(nodes[k], linearImage(ref.family, ref.xi[k], corners)) > 1e-12 * size)
+      return false;
+  return true;
 }
 
 JacobianRange jacobianRange(ElementType type, std::span<const Vec3> nodes) {
@@ -314,6 +330,10 @@ JacobianRange jacobianRange(ElementType type, std::span<const Vec3> nodes) {
     return r;
   }
   const BezierSampler& sampler = perType<BezierSampler>(type);
+  if (isSimplex(family(type)) && isStraight(type, nodes)) {
+    const double d = determinant(frame, nodes, sampler.gradients.data());
+    return {d, d};
+  }
   std::vector<double> samples(sampler.bernstein.size());
   for (std::size_t s = 0; s < samples.size(); ++s)
     samples[s] = determinant(frame, nodes, &sampler.gradients[s * n]);
@@ -332,6 +352,13 @@ double elementMeasure(ElementType type, std::span<const Vec3> nodes) {
   requireNodes(type, nodes);
   const int dim = dimension(type);
   if (dim == 0) return 0;
+  if (isSimplex(family(type)) && isStraight(type, nodes)) {
+    // A constant determinant times the reference element's measure (2, 1/2, 1/6).
+    constexpr double kReference[] = {0, 2, 0.5, 1.0 / 6};
+    std::vector<Gradient> g(nodes.size());
+    shapeFunctions(type).gradients({}, g);
+    return kReference[dim] * std::abs(determinant(frameOf(type, nodes), nodes, g.data()));
+  }
   const MeasureRule& rule = perType<MeasureRule>(type);
   double total = 0;
   for (std::size_t q = 0; q < rule.points.size(); ++q)

@@ -24,9 +24,14 @@ struct JacobianRange {
 double jacobianDeterminant(ElementType type, std::span<const Vec3> nodes,
                            const std::array<double, 3>& xi);
 
+// Whether every node lies where the first-order element of the corners puts it (within 1e-12
+// of the element's size): the element is then not curved.
+bool isStraight(ElementType type, std::span<const Vec3> nodes);
+
 // Bounds from Bernstein (Bezier) coefficients of the determinant, a polynomial, refined by
 // subdividing the reference element where the bound alone cannot tell the sign. Pyramids
-// are sampled on a dense lattice instead (see jacobian.cpp).
+// are sampled on a dense lattice instead (see jacobian.cpp). A straight simplex has the
+// constant determinant of its corners, found without a search.
 JacobianRange jacobianRange(ElementType type, std::span<const Vec3> nodes);
 
 // min / max of the determinant (min / max(|min|, |max|)): in (0, 1] for a valid element, 1

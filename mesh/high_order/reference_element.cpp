@@ -224,4 +224,13 @@ void linearShapeFunctions(ElementFamily family, const std::array<double, 3>& xi,
   }
 }
 
+Vec3 linearImage(ElementFamily family, const std::array<double, 3>& xi,
+                 std::span<const Vec3> corners) {
+  double n[8];
+  linearShapeFunctions(family, xi, n);
+  Vec3 x{0, 0, 0};
+  for (int v = 0; v < vertexCount(family); ++v) x += corners[v] * n[v];
+  return x;
+}
+
 }  // namespace geomesh

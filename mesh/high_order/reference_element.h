@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "kernel/vec3.h"
 #include "mesh/core/element_type.h"
 
 namespace geomesh {
@@ -41,5 +43,10 @@ const ReferenceElement& referenceElement(ElementType type);
 // The first-order shape functions of a family at `xi`: one value per vertex into `values`
 // (which holds at least 8). Pyramids use the rational functions that are bilinear on the base.
 void linearShapeFunctions(ElementFamily family, const std::array<double, 3>& xi, double* values);
+
+// The point at `xi` of the straight (first-order) element whose vertices are `corners`: where
+// a node of reference coordinates xi sits before it is curved.
+Vec3 linearImage(ElementFamily family, const std::array<double, 3>& xi,
+                 std::span<const Vec3> corners);
 
 }  // namespace geomesh

@@ -46,6 +46,13 @@ SharedKey keyOf(const NodePlace& place, std::span<const NodeIndex> corners) {
 }
 
 // The entity an element block lies on, with what placing nodes on it needs.
+// The corners of the element being raised: their nodes and where they are.
+struct Corners {
+  std::span<const NodeIndex> nodes;
+  std::array<Vec3, 8> xyz{};
+  std::span<const Vec3> points() const { return {xyz.data(), nodes.size()}; }
+};
+
 struct Support {
   EntityId id;
   const CurveGeometry* curve = nullptr;
@@ -62,7 +69,7 @@ class Elevator {
   std::size_t nodesAdded() const { return added_; }
 
   void elevate(EntityMesh& em) {
-    Support support = supportOf(em);
+    const Support support = supportOf(em);
     bool onGeometry = true;
     for (ElementBlock& block : em.blocks) {
       const ElementFamily f = family(block.type);
@@ -77,7 +84,8 @@ class Elevator {
       std::vector<NodeIndex> nodes;
       nodes.reserve(elements * ref.xi.size());
       for (std::size_t e = 0; e < elements; ++e) {
-        const std::span<const NodeIndex> c = block.element(e).first(corners);
+        Corners c{block.element(e).first(corners)};
+        for (std::size_t v = 0; v < corners; ++v) c.xyz[v] = mesh_.node(c.nodes[v]);
         const std::size_t first = nodes.size();
         for (std::size_t k = 0; k < ref.places.size(); ++k) {
           const std::span<const NodeIndex> made(nodes.data() + first, k);
@@ -114,18 +122,19 @@ class Elevator {
   }
 
   // Node k of an element whose nodes before k are `made`.
-  NodeIndex nodeAt(const ReferenceElement& ref, std::size_t k, std::span<const NodeIndex> corners,
-                   std::span<const NodeIndex> made, Support& support, EntityMesh& em,
+  NodeIndex nodeAt(const ReferenceElement& ref, std::size_t k, const Corners& corners,
+                   std::span<const NodeIndex> made, const Support& support, EntityMesh& em,
                    bool& onGeometry) {
     const NodePlace& place = ref.places[k];
-    if (place.kind == NodePlace::Vertex) return corners[place.corners[0]];
+    if (place.kind == NodePlace::Vertex) return corners.nodes[place.corners[0]];
     if (place.kind == NodePlace::Cell)
-      return addNode(em, blended(ref, k, corners, made), std::nullopt, onGeometry);
-    const SharedKey key = keyOf(place, corners);
+      return addNode(em, blended(ref, k, corners, made), {}, onGeometry);
+    const SharedKey key = keyOf(place, corners.nodes);
     if (auto it = shared_.find(key); it != shared_.end()) return it->second;
-    const Vec3 guess = place.kind == NodePlace::Face ? blended(ref, k, corners, made)
-                                                     : straightPoint(place, corners);
-    const NodeIndex node = placeOn(support, place, corners, guess, em, onGeometry);
+    const Vec3 guess = place.kind == NodePlace::Face
+                           ? blended(ref, k, corners, made)
+                           : linearImage(ref.family, ref.xi[k], corners.points());
+    const NodeIndex node = placeOn(support, place, corners.nodes, guess, em, onGeometry);
     shared_.emplace(key, node);
     return node;
   }
@@ -133,9 +142,9 @@ class Elevator {
   // Where a face or inside node goes when the element's edges are curved: its straight
   // position moved by the edges' displacements, interpolated by the shape functions of the
   // serendipity element (vertex and edge nodes only) of the same order.
-  Vec3 blended(const ReferenceElement& ref, std::size_t k, std::span<const NodeIndex> corners,
+  Vec3 blended(const ReferenceElement& ref, std::size_t k, const Corners& corners,
                std::span<const NodeIndex> made) const {
-    const Vec3 straight = straightCell(ref.family, ref.xi[k], corners);
+    const Vec3 straight = linearImage(ref.family, ref.xi[k], corners.points());
     if (options_.secondOrderLinear) return straight;
     const std::optional<ElementType> edgesOnly = elementTypeOf(ref.family, ref.order, true);
     if (!edgesOnly || !isSerendipity(*edgesOnly) || nodeCount(*edgesOnly) > int(made.size()))
@@ -145,47 +154,27 @@ class Elevator {
     shape.values(ref.xi[k], n);
     Vec3 shift{0, 0, 0};
     for (int j = vertexCount(ref.family); j < shape.size(); ++j)
-      shift += n[j] * (mesh_.node(made[j]) - straightCell(ref.family, ref.xi[j], corners));
+      shift += n[j] * (mesh_.node(made[j]) - linearImage(ref.family, ref.xi[j], corners.points()));
     return straight + shift;
   }
 
-  Vec3 straightPoint(const NodePlace& place, std::span<const NodeIndex> corners) const {
-    Vec3 x{0, 0, 0};
-    for (int c = 0; c < place.cornerCount; ++c)
-      x = x + mesh_.node(corners[place.corners[c]]) * (double(place.weights[c]) / place.total);
-    return x;
-  }
-
-  Vec3 straightCell(ElementFamily f, const std::array<double, 3>& xi,
-                    std::span<const NodeIndex> corners) const {
-    double n[8];
-    linearShapeFunctions(f, xi, n);
-    Vec3 x{0, 0, 0};
-    for (std::size_t c = 0; c < corners.size(); ++c) x = x + mesh_.node(corners[c]) * n[c];
-    return x;
-  }
-
   // A node on an edge or a face, near `straight` (its straight or blended position).
-  NodeIndex placeOn(Support& s, const NodePlace& place, std::span<const NodeIndex> corners,
+  NodeIndex placeOn(const Support& s, const NodePlace& place, std::span<const NodeIndex> corners,
                     Vec3 straight, EntityMesh& em, bool& onGeometry) {
     if (s.curve) {
       if (const std::optional<double> t = curveParameter(s, place, corners))
-        return addNode(em, s.curve->point(*t), std::vector<double>{*t}, onGeometry);
+        return addNode(em, s.curve->point(*t), std::array{*t}, onGeometry);
     } else if (s.surface) {
       const Vec2 uv = surfaceParameter(s, place, corners, straight);
-      s.surfaceParameter.reserve(s.surfaceParameter.size() + 1);
-      const NodeIndex node =
-          addNode(em, s.surface->point(uv), std::vector<double>{uv.u, uv.v}, onGeometry);
-      s.surfaceParameter[node] = uv;
-      return node;
+      return addNode(em, s.surface->point(uv), std::array{uv.u, uv.v}, onGeometry);
     } else if (em.entity.dim == 2 && em.parametric.size() == 2 * em.nodes.size()) {
       const ModelSurface* plane = model_.surface(em.entity.tag);
       if (plane && plane->geometry && !options_.secondOrderLinear) {
         const Vec2 uv = plane->geometry->project(straight);
-        return addNode(em, straight, std::vector<double>{uv.u, uv.v}, onGeometry);
+        return addNode(em, straight, std::array{uv.u, uv.v}, onGeometry);
       }
     }
-    return addNode(em, straight, std::nullopt, onGeometry);
+    return addNode(em, straight, {}, onGeometry);
   }
 
   // The parameter of a corner on the curve: its own, or the end of the range it sits at.
@@ -246,7 +235,8 @@ class Elevator {
     return distance(s.surface->point(projected), straight) < off ? projected : uv;
   }
 
-  NodeIndex addNode(EntityMesh& em, Vec3 x, std::optional<std::vector<double>> parameters,
+  // A new node on em; `parameters` are its own on em's curve or surface, empty if unknown.
+  NodeIndex addNode(EntityMesh& em, Vec3 x, std::span<const double> parameters,
                     bool& onGeometry) {
     const NodeIndex node = mesh_.addNode(x);
     ++added_;
@@ -254,8 +244,8 @@ class Elevator {
     const bool complete = (em.entity.dim == 1 || em.entity.dim == 2) &&
                           em.parametric.size() == stride * em.nodes.size();
     em.nodes.push_back(node);
-    if (complete && parameters && parameters->size() == stride)
-      em.parametric.insert(em.parametric.end(), parameters->begin(), parameters->end());
+    if (complete && parameters.size() == stride)
+      em.parametric.insert(em.parametric.end(), parameters.begin(), parameters.end());
     else if (complete)
       onGeometry = false;
     return node;
@@ -267,6 +257,13 @@ class Elevator {
   std::unordered_map<SharedKey, NodeIndex, SharedKeyHash> shared_;
   std::size_t added_ = 0;
 };
+
+// Every entity the mesh has, by dimension first: a list to walk while the meshes change.
+std::vector<EntityId> meshedEntities(const Mesh& mesh) {
+  std::vector<EntityId> ids;
+  for (const auto& entry : mesh.entities()) ids.push_back(entry.first);
+  return ids;
+}
 
 // Drops every node that is not a vertex of an element, and makes every block first order.
 void reduceToFirstOrder(Mesh& mesh) {
@@ -280,11 +277,7 @@ void reduceToFirstOrder(Mesh& mesh) {
         for (NodeIndex n : b.element(e).first(v)) vertices.insert(n);
     }
   if (!any) return;
-  for (const EntityId id : [&] {
-         std::vector<EntityId> ids;
-         for (const auto& entry : mesh.entities()) ids.push_back(entry.first);
-         return ids;
-       }()) {
+  for (const EntityId id : meshedEntities(mesh)) {
     EntityMesh& em = mesh.entity(id);
     for (ElementBlock& b : em.blocks) {
       const std::size_t v = vertexCount(b.type), n = nodeCount(b.type);
@@ -329,9 +322,7 @@ HighOrderSummary setOrder(const Model& model, const MeshOptions& options, Mesh& 
   reduceToFirstOrder(mesh);
   if (options.elementOrder == 1) return summary;
   Elevator elevator(model, options, mesh);
-  std::vector<EntityId> ids;
-  for (const auto& entry : mesh.entities()) ids.push_back(entry.first);  // by dimension first
-  for (const EntityId id : ids) elevator.elevate(mesh.entity(id));
+  for (const EntityId id : meshedEntities(mesh)) elevator.elevate(mesh.entity(id));
   summary.nodesAdded = elevator.nodesAdded();
   if (!options.secondOrderLinear) repairCurvedElements(model, options, mesh, log, summary);
   return summary;
