@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "api/partitioning.h"
 #include "grammar/diagnostic.h"
 #include "mesh/core/mesh_error.h"
 #include "mesh/pipeline/generate.h"
@@ -52,8 +53,13 @@ void generate(Session& session, int dim) {
 void setOrder(Session& session, int order) {
   MeshOptions options = session.meshOptions();
   options.elementOrder = order;
+  // The pieces of a partitioned mesh hold its elements: made again for the new ones.
+  const MeshPartitions* partitions = session.mesh().partitions();
+  const int partitionCount = partitions ? partitions->count : 0;
+  session.mesh().clearPartitions();
   try {
     raiseOrder(session.model(), options, session.mesh(), session.log());
+    if (partitionCount > 0) partitionMesh(session, partitionCount);
   } catch (const MeshError& error) {
     if (auto where = session.origin(error.entity)) failAt(*where, error.what());
     throw;
@@ -69,8 +75,8 @@ void requireSomethingToMesh(Session& session, int dim) {
   const std::string ignored = count == 1 ? " statement was ignored as not supported yet (this one)"
                                          : " statements were ignored as not supported yet (the "
                                            "first here)";
-  failAt(*first, "nothing to mesh: " + std::to_string(count) + ignored +
-                     " and the model has no " + entityKinds(dim));
+  failAt(*first, "nothing to mesh: " + std::to_string(count) + ignored + " and the model has no " +
+                     entityKinds(dim));
 }
 
 }  // namespace geomesh::api

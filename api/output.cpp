@@ -1,9 +1,12 @@
 // Output files of a session: mesh (through the format table), unrolled geometry, options.
 #include "api/output.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
+#include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "io/atomic_file.h"
 #include "kernel/unrolled_geo_hooks.h"
@@ -47,17 +50,54 @@ MeshWriteOptions writeOptions(const OptionRegistry& options) {
   MeshWriteOptions w;
   w.saveAll = options.number("Mesh.SaveAll") != 0;
   w.binary = options.number("Mesh.Binary") != 0;
+  w.saveGroupsOfElements = clampedInteger<int>(options.number("Mesh.SaveGroupsOfElements"));
+  w.saveGroupsOfNodes = clampedInteger<int>(options.number("Mesh.SaveGroupsOfNodes"));
+  w.partitionOldStyleMsh2 = options.number("Mesh.PartitionOldStyleMsh2") != 0;
+  w.splitPartitions = options.number("Mesh.PartitionSplitMeshFiles") != 0;
   return w;
 }
 
+std::string unsavedEntities(const Model& model, const Mesh& mesh) {
+  static constexpr const char* kKinds[] = {"point", "curve", "surface", "volume"};
+  std::set<EntityId> grouped;
+  std::set<int> groupedDims;
+  for (const auto& [id, group] : model.physicalGroups()) {
+    groupedDims.insert(id.dim);
+    for (int tag : group.entities) grouped.insert({id.dim, std::abs(tag)});
+  }
+  std::vector<std::string> names;
+  std::size_t elements = 0;
+  for (const auto& [id, em] : mesh.entities()) {
+    const std::size_t count = em.elementCount();
+    if (count == 0 || !groupedDims.contains(id.dim) || grouped.contains(id)) continue;
+    elements += count;
+    names.push_back(std::string(id.dim >= 0 && id.dim <= 3 ? kKinds[id.dim] : "entity") + " " +
+                    std::to_string(id.tag));
+  }
+  if (names.empty()) return "";
+  constexpr std::size_t kShown = 8;
+  std::string list;
+  for (std::size_t i = 0; i < std::min(names.size(), kShown); ++i)
+    list += (i == 0 ? "" : ", ") + names[i];
+  if (names.size() > kShown) list += " and " + std::to_string(names.size() - kShown) + " more";
+  return list + " (" + std::to_string(elements) + " element" + (elements == 1 ? "" : "s") + ")";
+}
+
 void writeMesh(const Session& session, const std::string& path, const MeshFormat& format) {
-  writeMeshFile(path, format, session.model(), session.mesh(), writeOptions(session.options()));
+  const MeshWriteOptions options = writeOptions(session.options());
+  if (!options.saveAll)
+    if (const std::string left = unsavedEntities(session.model(), session.mesh()); !left.empty())
+      session.log().warning(
+          "'" + path + "' leaves out the elements of " + left +
+          ": they are in no physical group while others of their dimension are; -save_all "
+          "(Mesh.SaveAll = 1) saves them too");
+  writeMeshFile(path, format, session.model(), session.mesh(), options);
 }
 
 void writeUnrolledGeometry(Session& session, const std::string& path) {
   writeFileAtomically(path, [&](std::ostream& out) {
-    session.factories().writeUnrolled(
-        out, meshConstraintHooks(session.model().meshConstraints()), path + ".xao");
+    session.factories().writeUnrolled(out, meshConstraintHooks(session.model().meshConstraints()),
+                                      path + ".xao");
   });
 }
 

@@ -20,8 +20,14 @@ const MeshFormat& outputFormat(const OptionRegistry& options, const std::string&
 MeshWriteOptions writeOptions(const OptionRegistry& options);
 
 // Writes the session's model and mesh to `path`; nothing is left at `path` on failure
-// (std::runtime_error naming the file).
+// (std::runtime_error naming the file). Without Mesh.SaveAll, warns when physical groups leave
+// out meshed entities of a dimension they group, naming them (unsavedEntities).
 void writeMesh(const Session& session, const std::string& path, const MeshFormat& format);
+
+// "volume 3, surface 7 (1234 elements)": the meshed entities that no physical group holds
+// while groups of their dimension exist, so that a file keeping only physical groups leaves
+// them out; "" when there are none.
+std::string unsavedEntities(const Model& model, const Mesh& mesh);
 
 // The geometry as a flat script, with its mesh constraints (what -0 and Save
 // "f.geo_unrolled" write); OpenCASCADE shapes go to "f.geo_unrolled.xao", which it merges.

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "api/partitioning.h"
 #include "io/formats.h"
 #include "mesh/pipeline/generate.h"
 #include "stdlib/clamped_integer.h"
@@ -28,7 +29,9 @@ void Session::synchronize() {
         "the script defines geometry besides a merged mesh file: mixing both is not supported yet");
 }
 
-bool Session::hasGeometry() const { return factories_.hasEntities(); }
+bool Session::hasGeometry() const {
+  return factories_.hasEntities();
+}
 
 void Session::readMesh(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
@@ -78,6 +81,8 @@ void Session::generate(int dim) {
     return;
   }
   generateMesh(model_, meshOptions(), dim, mesh_, log_);
+  const int partitions = clampedInteger<int>(options_.number("Mesh.NbPartitions"));
+  if (partitions > 0) api::partitionMesh(*this, partitions);
 }
 
 void Session::clearModel() {

@@ -1,9 +1,9 @@
 // Session: options, geometry factory, model, mesh and output of one run, without globals.
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <map>
-#include <cstdint>
 #include <memory>
 #include <optional>
 #include <set>
@@ -40,7 +40,7 @@ class Session {
   const Model& model() const { return model_; }
   Mesh& mesh() { return mesh_; }
   const Mesh& mesh() const { return mesh_; }
-  MessageSink& log() { return log_; }
+  MessageSink& log() const { return log_; }
   std::ostream& out() { return out_; }  // what scripts print (Printf)
 
   // Values given by -setnumber / -setstring: they override DefineConstant / DefineNumber /

@@ -42,10 +42,10 @@ class ArgumentReader {
 // Flags that set one numeric option.
 const std::map<std::string, std::string>& numberOptionFlags() {
   static const std::map<std::string, std::string> flags = {
-      {"-clmin", "Mesh.MeshSizeMin"},     {"-clmax", "Mesh.MeshSizeMax"},
+      {"-clmin", "Mesh.MeshSizeMin"},      {"-clmax", "Mesh.MeshSizeMax"},
       {"-clscale", "Mesh.MeshSizeFactor"}, {"-nt", "General.NumThreads"},
-      {"-order", "Mesh.ElementOrder"},    {"-smooth", "Mesh.Smoothing"},
-      {"-rand", "Mesh.RandomFactor"},
+      {"-order", "Mesh.ElementOrder"},     {"-smooth", "Mesh.Smoothing"},
+      {"-rand", "Mesh.RandomFactor"},      {"-part", "Mesh.NbPartitions"},
   };
   return flags;
 }
@@ -74,6 +74,10 @@ bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
     cl.binary = true;
   } else if (flag == "-save_all" || flag == "-saveall") {
     cl.saveAll = true;
+  } else if (flag == "-part_split") {
+    cl.numberOptions.emplace_back("Mesh.PartitionSplitMeshFiles", 1);
+  } else if (flag == "-part_ghosts") {
+    cl.numberOptions.emplace_back("Mesh.PartitionCreateGhostCells", 1);
   } else if (flag == "-check") {
     cl.check = true;
   } else if (flag == "-allow_system_calls") {
@@ -90,7 +94,8 @@ bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
     cl.setStrings.emplace_back(name, in.value(flag));
   } else if (flag == "-algo") {
     const std::string name = in.value(flag);
-    if (!applyAlgorithm(name, cl)) throw CommandLineError("unknown algorithm '" + name + "' for -algo");
+    if (!applyAlgorithm(name, cl))
+      throw CommandLineError("unknown algorithm '" + name + "' for -algo");
   } else if (flag == "-help" || flag == "-h" || flag == "--help") {
     cl.help = true;
   } else if (flag == "-version" || flag == "--version") {
@@ -113,7 +118,8 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   while (!in.done()) {
     const std::string& arg = in.take();
     if (arg.size() > 1 && arg[0] == '-') {
-      if (!parseFlag(arg, in, cl)) throw CommandLineError("unknown option '" + arg + "' (see -help)");
+      if (!parseFlag(arg, in, cl))
+        throw CommandLineError("unknown option '" + arg + "' (see -help)");
     } else {
       cl.files.push_back(arg);
     }
@@ -131,7 +137,8 @@ Meshes a .geo script in batch mode and writes the mesh (MSH 4.1 by default).
 Mesh:
   -0, -1, -2, -3         stop after evaluating the geometry (-0), or mesh up to dimension 1, 2, 3
   -o FILE                output file (default: the script's name with .msh)
-)" + std::string("  -format FORMAT         output format: ") + formatNameGroups() + R"(
+)" + std::string("  -format FORMAT         output format: ") +
+         formatNameGroups() + R"(
   -bin                   binary output
   -save_all              save every element, not only those of physical groups
   -algo NAME             2D/3D algorithm: meshadapt, del2d, front2d, del3d, ...
@@ -141,6 +148,8 @@ Mesh:
   -order N               element order (Mesh.ElementOrder)
   -smooth N              smoothing passes (Mesh.Smoothing)
   -rand VALUE            random perturbation factor (Mesh.RandomFactor)
+  -part N                split the mesh into N partitions with METIS (Mesh.NbPartitions)
+  -part_split            write each partition to its own file (name_1.msh, name_2.msh, ...)
   -check                 check a mesh file (.msh) and report problems
   -keep_partial          when meshing fails, still write what was meshed
 Script:

@@ -9,6 +9,7 @@
 #include "api/meshing.h"
 #include "api/options.h"
 #include "api/output.h"
+#include "api/partitioning.h"
 #include "api/session.h"
 #include "app/command_line.h"
 #include "app/console_log.h"
@@ -16,9 +17,10 @@
 #include "interpreter/diagnostics.h"
 #include "interpreter/run_script.h"
 #include "io/formats.h"
-#include "mesh/high_order/set_order.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/core/mesh_error.h"
+#include "mesh/high_order/set_order.h"
+#include "stdlib/clamped_integer.h"
 
 namespace geomesh {
 
@@ -148,8 +150,8 @@ int checkMeshRead(const Session& session, const MeshSummary& summary, ConsoleLog
               report.summary());
   if (summary.invalidElements > 0) {
     std::ostringstream os;
-    os << "Check: " << summary.invalidElements
-       << " invalid curved element(s): scaled Jacobian min " << summary.minScaledJacobian;
+    os << "Check: " << summary.invalidElements << " invalid curved element(s): scaled Jacobian min "
+       << summary.minScaledJacobian;
     log.error(os.str());
   }
   if (report.ok() && summary.invalidElements == 0) {
@@ -170,8 +172,10 @@ int runMeshFile(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   const MeshSummary summary = summarizeMesh(session.model(), session.mesh());
   logSummary(summary, log);
   const int status = cl.check ? checkMeshRead(session, summary, log) : 0;
+  applyOptions(cl, session.options());
+  const int partitions = clampedInteger<int>(session.options().number("Mesh.NbPartitions"));
+  if (partitions > 0) api::partitionMesh(session, partitions);
   if (!cl.output.empty()) {
-    applyOptions(cl, session.options());
     api::writeMesh(session, cl.output, api::outputFormat(session.options(), cl.output, cl.format));
     log.info("Wrote '" + cl.output + "'");
   }

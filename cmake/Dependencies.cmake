@@ -69,6 +69,22 @@ foreach(lib ${GEOMESH_OCC_LIBS})
   target_link_libraries(geomesh_occ INTERFACE ${OCC_${lib}_LIBRARY})
 endforeach()
 
+# A library with one header and one shared object, as the INTERFACE target `target`.
+function(geomesh_system_library target header library what package)
+  find_path(${target}_INCLUDE_DIR ${header})
+  find_library(${target}_LIBRARY ${library})
+  geomesh_require(${target}_INCLUDE_DIR "${what} headers" "${package}")
+  geomesh_require(${target}_LIBRARY "the ${what} library" "${package}")
+  add_library(${target} INTERFACE)
+  target_include_directories(${target} SYSTEM INTERFACE ${${target}_INCLUDE_DIR})
+  target_link_libraries(${target} INTERFACE ${${target}_LIBRARY})
+endfunction()
+
+# METIS: graph partitioning of meshes (PartitionMesh, -part).
+geomesh_system_library(geomesh_metis metis.h metis "METIS" libmetis-dev)
+# CGNS: the CFD General Notation System files (.cgns), HDF5-based.
+geomesh_system_library(geomesh_cgns cgnslib.h cgns "CGNS" libcgns-dev)
+
 if(GEOMESH_TESTS)
   find_package(GTest QUIET)
   geomesh_require(GTest_FOUND "GoogleTest" "libgtest-dev")

@@ -6,16 +6,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "api/session.h"
 #include "grammar/parse.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
-#include "api/session.h"
 #include "stdlib/edit_distance.h"
 
 namespace geomesh {
 
 namespace {
-
 
 std::optional<std::string> readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -37,8 +36,7 @@ void runScriptText(Session& session, const std::string& text, const std::string&
 
 // Values given by -setnumber / -setstring are variables before the script starts: the
 // script reads them directly, and DefineConstant leaves them as they are.
-Interpreter::Interpreter(Session& session)
-    : session_(session), functions_(builtinFunctions()) {
+Interpreter::Interpreter(Session& session) : session_(session), functions_(builtinFunctions()) {
   for (const auto& [name, value] : session.numberOverrides())
     variables_[name] = Value::number(value);
   for (const auto& [name, value] : session.stringOverrides())
@@ -47,7 +45,9 @@ Interpreter::Interpreter(Session& session)
       [this](const UnsupportedOperation& unsupported) { reportHandover(unsupported); });
 }
 
-Interpreter::~Interpreter() { session_.factories().onHandover(nullptr); }
+Interpreter::~Interpreter() {
+  session_.factories().onHandover(nullptr);
+}
 
 void Interpreter::runFile(const std::string& path) {
   auto text = readFile(path);
@@ -93,9 +93,7 @@ void Interpreter::execute(const ast::Stmt& statement) {
         if constexpr (std::is_same_v<Node, ast::MacroStmt>) defineMacro(node, where);
         if constexpr (std::is_same_v<Node, ast::CallStmt>) executeCall(node, where);
         if constexpr (std::is_same_v<Node, ast::DefineConstantStmt>) executeDefineConstant(node);
-        if constexpr (std::is_same_v<Node, ast::PluginStmt>)
-          session_.log().debug(where.file + ":" + std::to_string(where.line) + ": Plugin(" +
-                               node.plugin + ") has no effect in batch mode");
+        if constexpr (std::is_same_v<Node, ast::PluginStmt>) executePlugin(node, where);
       },
       statement.node);
 }
@@ -138,8 +136,7 @@ double Interpreter::maxLoopIterations() const {
 }
 
 void Interpreter::failTooManyIterations(const SourceLocation& where) const {
-  fail(where, "loop has more than " +
-                  std::to_string(static_cast<long long>(maxLoopIterations())) +
+  fail(where, "loop has more than " + std::to_string(static_cast<long long>(maxLoopIterations())) +
                   " iterations; General.MaxLoopIterations sets the limit");
 }
 
@@ -176,8 +173,9 @@ void Interpreter::executeCall(const ast::CallStmt& call, const SourceLocation& w
   }
   const double maxDepth = session_.options().number("General.MaxMacroDepth");
   if (callDepth_ >= maxDepth)
-    fail(where, "macro calls nested deeper than " + std::to_string(static_cast<long long>(maxDepth)) +
-                    " (endless recursion of '" + name + "'?); General.MaxMacroDepth sets the limit");
+    fail(where, "macro calls nested deeper than " +
+                    std::to_string(static_cast<long long>(maxDepth)) + " (endless recursion of '" +
+                    name + "'?); General.MaxMacroDepth sets the limit");
   ++callDepth_;
   try {
     execute(*macro->second);

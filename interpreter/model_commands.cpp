@@ -7,6 +7,7 @@
 
 #include "api/meshing.h"
 #include "api/output.h"
+#include "api/partitioning.h"
 #include "api/session.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/script_interpreter.h"
@@ -49,6 +50,27 @@ void Interpreter::executeSetOrder(const ast::CommandStmt& command, const SourceL
   } catch (const ScriptError& error) {
     fail(error.location(), error.message());
   } catch (const std::runtime_error& error) {
+    fail(where, error.what());
+  }
+}
+
+// PartitionMesh n; splits the current mesh with METIS, as -part n does after meshing.
+void Interpreter::executePartitionMesh(const ast::CommandStmt& command,
+                                       const SourceLocation& where) {
+  if (!hasBareArgument(command)) return unsupportedStatement(command, where);
+  const double n = evaluateNumber(*command.args[0]);
+  const int count = clampedInteger<int>(n);
+  if (n != count || count < 1)
+    fail(command.args[0]->loc, "'PartitionMesh' takes a whole number of partitions, at least 1");
+  if (session_.sandboxed()) {
+    warn(where, "'PartitionMesh' skipped: this session meshes nothing");
+    return;
+  }
+  // As in the reference, the count becomes Mesh.NbPartitions: meshing again partitions again.
+  session_.options().setNumber("Mesh.NbPartitions", count);
+  try {
+    api::partitionMesh(session_, count);
+  } catch (const std::exception& error) {
     fail(where, error.what());
   }
 }
@@ -142,8 +164,8 @@ void Interpreter::saveFile(const ast::CommandStmt& command, const SourceLocation
   const std::string ext = extensionOf(path);
   const std::string shown = path.lexically_normal().string();
   if (session_.sandboxed()) {
-    warn(where, "'" + command.words[0] + "' of '" + shown +
-                    "' skipped: this session writes no file");
+    warn(where,
+         "'" + command.words[0] + "' of '" + shown + "' skipped: this session writes no file");
     return;
   }
   if (ext == ".brep" || ext == ".step" || ext == ".stp" || ext == ".xao")
@@ -237,7 +259,8 @@ bool Interpreter::deleteByName(const ast::Expr& what, const SourceLocation& wher
 // ... Null for any other option.
 std::optional<double> Interpreter::modelStatistic(std::string_view name) {
   static constexpr std::pair<std::string_view, std::array<ElementType, 3>> kFamilies[] = {
-      {"Mesh.NbTriangles", {ElementType::Triangle3, ElementType::Triangle6, ElementType::Triangle6}},
+      {"Mesh.NbTriangles",
+       {ElementType::Triangle3, ElementType::Triangle6, ElementType::Triangle6}},
       {"Mesh.NbQuadrangles", {ElementType::Quad4, ElementType::Quad8, ElementType::Quad9}},
       {"Mesh.NbTetrahedra", {ElementType::Tet4, ElementType::Tet10, ElementType::Tet10}},
       {"Mesh.NbHexahedra", {ElementType::Hex8, ElementType::Hex20, ElementType::Hex27}},
@@ -255,8 +278,8 @@ std::optional<double> Interpreter::modelStatistic(std::string_view name) {
           count += static_cast<double>(block.size());
     return count;
   }
-  constexpr std::string_view kBounds[] = {"General.MinX", "General.MinY", "General.MinZ",
-                                          "General.MaxX", "General.MaxY", "General.MaxZ",
+  constexpr std::string_view kBounds[] = {"General.MinX",           "General.MinY", "General.MinZ",
+                                          "General.MaxX",           "General.MaxY", "General.MaxZ",
                                           "General.BoundingBoxSize"};
   const auto found = std::find(std::begin(kBounds), std::end(kBounds), name);
   if (found == std::end(kBounds)) return std::nullopt;

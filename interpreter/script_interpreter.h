@@ -12,12 +12,12 @@
 
 #include "grammar/ast.h"
 #include "interpreter/function_registry.h"
-#include "kernel/solid_modeling.h"
 #include "interpreter/value.h"
 #include "kernel/affine_map.h"
 #include "kernel/extrusion_motion.h"
 #include "kernel/geometry_error.h"
 #include "kernel/model.h"
+#include "kernel/solid_modeling.h"
 #include "stdlib/math_functions.h"
 
 namespace geomesh {
@@ -199,6 +199,9 @@ class Interpreter {
   // the whole model and its mesh: Mesh n, Save, Merge, Delete Model, ... (model_commands.cpp)
   void executeMesh(const ast::CommandStmt& command, const SourceLocation& where);
   void executeSetOrder(const ast::CommandStmt& command, const SourceLocation& where);
+  void executePartitionMesh(const ast::CommandStmt& command, const SourceLocation& where);
+  // Plugin(name).option = value; and Plugin(name).Run; (plugins.cpp)
+  void executePlugin(const ast::PluginStmt& plugin, const SourceLocation& where);
   void executeSave(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrint(const ast::CommandStmt& command, const SourceLocation& where);
   void executeMerge(const ast::CommandStmt& command, const SourceLocation& where);
@@ -219,8 +222,7 @@ class Interpreter {
   void defineTransfiniteSurface(const ast::CommandStmt& command, const SourceLocation& where);
   void recombineSurfaces(const ast::CommandStmt& command, const SourceLocation& where);
   void defineTransfiniteVolume(const ast::CommandStmt& command, const SourceLocation& where);
-  void copyMeshingMethod(const std::vector<EntityId>& sources,
-                         const std::vector<EntityId>& copies);
+  void copyMeshingMethod(const std::vector<EntityId>& sources, const std::vector<EntityId>& copies);
   void setSurfaceAlgorithm(const ast::CommandStmt& command, const SourceLocation& where);
   void defineField(const ast::CommandStmt& command, const SourceLocation& where);
   void setBackgroundField(const ast::CommandStmt& command, const SourceLocation& where);
@@ -270,6 +272,7 @@ class Interpreter {
   std::map<std::string, Value> variables_;
   std::map<std::string, const ast::StmtList*> macros_;
   std::map<std::string, double> parameterNumbers_;
+  std::map<std::string, std::map<std::string, double>> pluginOptions_;  // by plugin name
   std::map<std::string, std::string> parameterStrings_;
   std::map<std::string, StructSpace> structSpaces_;  // by namespace; "" is the global one
   std::deque<SourceFile> sources_;
@@ -277,7 +280,7 @@ class Interpreter {
   std::vector<std::string> includeStack_;
   mutable std::set<std::string> warned_;
   const SourceLocation* statementLocation_ = nullptr;  // of the statement being executed
-  std::set<std::string> handedOver_;  // operations reportHandover() has reported
+  std::set<std::string> handedOver_;                   // operations reportHandover() has reported
   int callDepth_ = 0;
   int deletedPhysicalTag_ = 0;  // the largest tag of the groups Delete Physicals removed
   RandomEngine random_;

@@ -111,7 +111,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"NonBlockingSystemCall ...", &Interpreter::executeSystemCall},
       {"Nurbs", &Interpreter::defineEntity},
       {"OptimizeMesh ...", &Interpreter::unsupportedStatement},
-      {"PartitionMesh ...", &Interpreter::unsupportedStatement},
+      {"PartitionMesh", &Interpreter::executePartitionMesh},
       {"Periodic Curve", &Interpreter::executePeriodic},
       {"Periodic Line", &Interpreter::executePeriodic},
       {"Periodic Surface", &Interpreter::executePeriodicSurface},

@@ -20,16 +20,15 @@ void writeTemporary(const std::filesystem::path& partial,
   if (!out) throw std::runtime_error("error while writing '" + partial.string() + "'");
 }
 
-}  // namespace
-
-void writeFileAtomically(const std::string& path,
-                         const std::function<void(std::ostream&)>& write) {
+// Runs `write` on the sibling temporary path, then renames it to `path`; see the header.
+void replaceAtomically(const std::string& path,
+                       const std::function<void(const std::filesystem::path&)>& write) {
   // A sibling of the destination, so that the final rename stays on one file system.
   std::filesystem::path partial = path;
   partial += ".partial";
   std::error_code ignored;
   try {
-    writeTemporary(partial, write);
+    write(partial);
     std::filesystem::rename(partial, path);
   } catch (const std::bad_alloc&) {
     std::filesystem::remove(partial, ignored);
@@ -38,6 +37,24 @@ void writeFileAtomically(const std::string& path,
     std::filesystem::remove(partial, ignored);
     throw std::runtime_error("cannot write '" + path + "': " + e.what());
   }
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(std::ostream&)>& write) {
+  replaceAtomically(path, [&](const std::filesystem::path& partial) {
+    writeTemporary(partial, write);
+  });
+}
+
+void writeFileAtomicallyByPath(const std::string& path,
+                               const std::function<void(const std::string&)>& write) {
+  replaceAtomically(path, [&](const std::filesystem::path& partial) {
+    write(partial.string());
+    if (!std::filesystem::exists(partial))
+      throw std::runtime_error("no file was written at '" + partial.string() + "'");
+  });
 }
 
 }  // namespace geomesh

@@ -14,4 +14,9 @@ namespace geomesh {
 // here.
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
+// The same for writers that open the file themselves (libraries that take a path): `write`
+// creates a complete file at the temporary path it is given.
+void writeFileAtomicallyByPath(const std::string& path,
+                               const std::function<void(const std::string&)>& write);
+
 }  // namespace geomesh

@@ -2,7 +2,9 @@
 #include "io/formats.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -15,17 +17,48 @@ namespace geomesh {
 // Defined in the file of each format.
 void writeVtk(std::ostream& out, const Model& model, const Mesh& mesh,
               const MeshWriteOptions& options);
+void readVtk(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeVtu(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void writeStl(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void readStl(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writePly(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void readPly(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeOff(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void readOff(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeUnv(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void readUnv(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeMedit(std::ostream& out, const Model& model, const Mesh& mesh,
+                const MeshWriteOptions& options);
+void readMedit(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeBdf(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void readBdf(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeInp(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void writeSu2(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void writeCgns(const std::string& path, const Model& model, const Mesh& mesh,
+               const MeshWriteOptions& options);
 
 namespace {
 
 void writeMsh41(std::ostream& out, const Model& model, const Mesh& mesh,
                 const MeshWriteOptions& options) {
-  writeMsh(out, model, mesh, {options.saveAll, options.binary, 4.1});
+  writeMsh(out, model, mesh,
+           {options.saveAll, options.binary, 4.1, options.partitionOldStyleMsh2,
+            options.onlyPartition});
 }
 
 void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
                 const MeshWriteOptions& options) {
-  writeMsh(out, model, mesh, {options.saveAll, options.binary, 2.2});
+  writeMsh(out, model, mesh,
+           {options.saveAll, options.binary, 2.2, options.partitionOldStyleMsh2,
+            options.onlyPartition});
 }
 
 // One row per format. Adding a format: its file in io/ defines the writer (and reader), and
@@ -33,7 +66,17 @@ void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
 constexpr MeshFormat kFormats[] = {
     {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh, 4},
     {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh, 4},
-    {"vtk", ".vtk", 16, 0.0, writeVtk, nullptr, 2},
+    {"vtk", ".vtk", 16, 0.0, writeVtk, readVtk, 2},
+    {"vtu", ".vtu", 0, 0.0, writeVtu, nullptr, 2},
+    {"stl", ".stl", 27, 0.0, writeStl, readStl, 1},
+    {"ply", ".ply", 0, 0.0, writePly, readPly, 1},
+    {"off", ".off", 0, 0.0, writeOff, readOff, 1},
+    {"unv", ".unv", 2, 0.0, writeUnv, readUnv, 2},
+    {"mesh", ".mesh", 30, 0.0, writeMedit, readMedit, 2},
+    {"bdf", ".bdf .nas", 31, 0.0, writeBdf, readBdf, 2},
+    {"cgns", ".cgns", 32, 0.0, nullptr, nullptr, 2, writeCgns},
+    {"inp", ".inp", 39, 0.0, writeInp, nullptr, 2},
+    {"su2", ".su2", 42, 0.0, writeSu2, nullptr, 1},
 };
 
 // The words of a space-separated list.
@@ -80,15 +123,22 @@ std::string joinedOnce(const std::vector<std::string>& items) {
 
 // The words of one field of the rows that can `use` (write or read), each once.
 template <class Use>
-std::string listed(std::string_view MeshFormat::*field, Use MeshFormat::*use) {
+std::string listed(std::string_view MeshFormat::*field, Use use) {
   std::vector<std::string> items;
   for (const MeshFormat& format : kFormats)
-    if (format.*use)
+    if (std::invoke(use, format))
       for (std::string_view word : words(format.*field)) items.emplace_back(word);
   return joinedOnce(items);
 }
 
 }  // namespace
+
+bool savesGroupsOfDimension(int saveGroups, int dim) {
+  if (saveGroups >= 0) return saveGroups != 0;
+  int digits = -saveGroups;
+  for (int k = 0; k < dim; ++k) digits /= 10;
+  return digits % 10 == 1;
+}
 
 bool MeshFormat::isNamed(std::string_view name) const { return contains(names, name); }
 
@@ -106,18 +156,19 @@ std::string orderUnsupportedReason(const MeshFormat& format, int order) {
 
 const MeshFormat* findFormatByName(std::string_view name) {
   for (const MeshFormat& format : kFormats)
-    if (format.write && format.isNamed(name)) return &format;
+    if (format.writes() && format.isNamed(name)) return &format;
   return nullptr;
 }
 
 const MeshFormat* findFormatByExtension(std::string_view extension, double version) {
   return findVersion(version, [&](const MeshFormat& f) {
-    return f.write && f.hasExtension(extension);
+    return f.writes() && f.hasExtension(extension);
   });
 }
 
 const MeshFormat* findFormatByCode(int code, double version) {
-  return findVersion(version, [&](const MeshFormat& f) { return f.write && f.code == code; });
+  if (code == 0) return nullptr;  // formats without a code are chosen by name or extension
+  return findVersion(version, [&](const MeshFormat& f) { return f.writes() && f.code == code; });
 }
 
 const MeshFormat* findReaderByExtension(std::string_view extension) {
@@ -126,12 +177,12 @@ const MeshFormat* findReaderByExtension(std::string_view extension) {
   return nullptr;
 }
 
-std::string formatNameList() { return listed(&MeshFormat::names, &MeshFormat::write); }
+std::string formatNameList() { return listed(&MeshFormat::names, &MeshFormat::writes); }
 
 std::string formatNameGroups() {
   std::vector<std::string> groups;
   for (const MeshFormat& format : kFormats) {
-    if (!format.write) continue;
+    if (!format.writes()) continue;
     const std::vector<std::string_view> names = words(format.names);
     std::string group(names.front());
     for (std::size_t i = 1; i < names.size(); ++i)
@@ -142,7 +193,7 @@ std::string formatNameGroups() {
 }
 
 std::string writtenExtensionList() {
-  return listed(&MeshFormat::extensions, &MeshFormat::write);
+  return listed(&MeshFormat::extensions, &MeshFormat::writes);
 }
 
 std::string readExtensionList() { return listed(&MeshFormat::extensions, &MeshFormat::read); }
@@ -150,7 +201,7 @@ std::string readExtensionList() { return listed(&MeshFormat::extensions, &MeshFo
 std::string formatCodeList() {
   std::vector<std::string> codes;
   for (const MeshFormat& format : kFormats)
-    if (format.write)
+    if (format.writes() && format.code != 0)
       codes.push_back(std::to_string(format.code) + " (" +
                       std::string(words(format.extensions).front().substr(1)) + ")");
   return joinedOnce(codes);
@@ -158,9 +209,27 @@ std::string formatCodeList() {
 
 void writeMeshFile(const std::string& path, const MeshFormat& format, const Model& model,
                    const Mesh& mesh, const MeshWriteOptions& options) {
-  if (!format.write)
+  if (!format.writes())
     throw std::runtime_error("cannot write '" + path + "': " + std::string(format.name()) +
                              " files are only read");
+  if (format.writeFile)
+    return writeFileAtomicallyByPath(path, [&](const std::string& temporary) {
+      format.writeFile(temporary, model, mesh, options);
+    });
+  const bool msh = format.write == writeMsh41 || format.write == writeMsh22;
+  if (msh && options.splitPartitions && mesh.partitions()) {
+    const std::filesystem::path whole(path);
+    for (int p = 1; p <= mesh.partitions()->count; ++p) {
+      std::filesystem::path part = whole;
+      part.replace_filename(whole.stem().string() + "_" + std::to_string(p) +
+                            whole.extension().string());
+      MeshWriteOptions one = options;
+      one.onlyPartition = p;
+      writeFileAtomically(part.string(),
+                          [&](std::ostream& out) { format.write(out, model, mesh, one); });
+    }
+    return;
+  }
   writeFileAtomically(path, [&](std::ostream& out) { format.write(out, model, mesh, options); });
 }
 

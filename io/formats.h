@@ -16,23 +16,44 @@ namespace geomesh {
 struct MeshWriteOptions {
   bool saveAll = false;  // Mesh.SaveAll: also save elements outside physical groups
   bool binary = false;   // Mesh.Binary, for formats with a binary form
+  // Mesh.SaveGroupsOfElements and Mesh.SaveGroupsOfNodes, for formats that hold named sets
+  // (UNV, INP, ...): 0 none; 1 every physical group; negative -d...: digit k+1 (from the
+  // right) of its opposite, when 1, selects the groups of dimension k.
+  int saveGroupsOfElements = 1;
+  int saveGroupsOfNodes = 0;
+  // Partitioned meshes in MSH files: Mesh.PartitionOldStyleMsh2, and
+  // Mesh.PartitionSplitMeshFiles (one file per partition, "name_1.msh", "name_2.msh", ...).
+  bool partitionOldStyleMsh2 = true;
+  bool splitPartitions = false;
+  int onlyPartition = 0;  // > 0: that partition only (set when splitting)
 };
+
+// Whether a physical group of dimension `dim` is saved as a set under a SaveGroupsOf* value.
+bool savesGroupsOfDimension(int saveGroups, int dim);
 
 using MeshWriter = void (*)(std::ostream& out, const Model& model, const Mesh& mesh,
                             const MeshWriteOptions& options);
 // Replaces `model` and `mesh` by the file's content; `name` prefixes error messages.
 using MeshReader = void (*)(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+// For formats whose library opens the file itself (CGNS): writes a complete file at `path`.
+using MeshFileWriter = void (*)(const std::string& path, const Model& model, const Mesh& mesh,
+                                const MeshWriteOptions& options);
 
 struct MeshFormat {
   std::string_view names;       // accepted by -format, space-separated; the first is its name
   std::string_view extensions;  // space-separated, with the dot (".msh")
-  int code = 0;                 // Mesh.Format
+  int code = 0;                 // Mesh.Format; 0 for formats the Gmsh manual gives no code
   // Rows that share an extension or a code are versions of one format: the row chosen is the
   // first whose minVersion is at most the version asked for (Mesh.MshFileVersion).
   double minVersion = 0;
   MeshWriter write = nullptr;  // null when the format is only read
   MeshReader read = nullptr;   // null when the format is only written
   int maxOrder = 1;            // the highest element order the format holds
+  // Set instead of `write` for a format written by a library to a path: writeMeshFile gives it
+  // a temporary path, renamed once the file is complete.
+  MeshFileWriter writeFile = nullptr;
+
+  bool writes() const { return write || writeFile; }
 
   std::string_view name() const { return names.substr(0, names.find(' ')); }
   bool isNamed(std::string_view name) const;

@@ -23,9 +23,30 @@ std::vector<int> tagList(MshDecoder& in) {
   return tags;
 }
 
+void readEntityAfterTag(MshDecoder& in, MshReadState& state, int dim, int tag);
+
 void readEntity(MshDecoder& in, MshReadState& state, int dim) {
   const int tag = in.integer();
   if (tag < 0) in.fail("invalid entity tag " + std::to_string(tag));  // 0 is a tag too
+  readEntityAfterTag(in, state, dim, tag);
+}
+
+// A piece of a partitioned file: its parent and partitions, then an entity's fields. It is
+// read as an entity of its own, which holds its nodes and elements.
+void readPartitionedEntity(MshDecoder& in, MshReadState& state, int dim) {
+  const int tag = in.integer();
+  if (tag < 0) in.fail("invalid entity tag " + std::to_string(tag));
+  const int parentDim = in.integer();
+  in.integer();  // parent tag
+  if (parentDim < 0 || parentDim > 3)
+    in.fail("invalid parent dimension " + std::to_string(parentDim));
+  tagList(in);  // partitions
+  if (state.model.contains({dim, tag}))
+    in.fail("partition entity " + std::to_string(tag) + " is defined twice");
+  readEntityAfterTag(in, state, dim, tag);
+}
+
+void readEntityAfterTag(MshDecoder& in, MshReadState& state, int dim, int tag) {
   Vec3 min{in.real(), in.real(), in.real()};
   if (dim > 0)
     for (int i = 0; i < 3; ++i) in.real();  // the box's upper corner: derived, not stored
@@ -98,6 +119,24 @@ void readMsh41Entities(MshDecoder& in, MshReadState& state) {
   for (int dim = 0; dim < 4; ++dim)
     for (std::uint64_t i = 0; i < counts[dim]; ++i) readEntity(in, state, dim);
   expectSectionEnd(in, "$EndEntities");
+}
+
+// The pieces replace the model's entities: they hold every node and element, carry the
+// physical groups, and bound each other.
+void readMsh41PartitionedEntities(MshDecoder& in, MshReadState& state) {
+  state.model.clear();
+  state.physicalMembers.clear();
+  in.size();  // number of partitions
+  const std::uint64_t ghosts = count(in, 8);
+  for (std::uint64_t i = 0; i < ghosts; ++i) {
+    in.integer();  // ghost entity tag
+    in.integer();  // its partition
+  }
+  std::uint64_t counts[4];
+  for (std::uint64_t& c : counts) c = count(in, 8);
+  for (int dim = 0; dim < 4; ++dim)
+    for (std::uint64_t i = 0; i < counts[dim]; ++i) readPartitionedEntity(in, state, dim);
+  expectSectionEnd(in, "$EndPartitionedEntities");
 }
 
 void readMsh41Nodes(MshDecoder& in, MshReadState& state) {

@@ -1,5 +1,6 @@
-// MSH 4.1: $Entities, then $Nodes and $Elements in blocks, one block per entity (and element
-// type). In binary files counts are size_t, tags in headers int, node and element tags size_t.
+// MSH 4.1: $Entities (and $PartitionedEntities), then $Nodes and $Elements in blocks, one block
+// per entity (and element type). In binary files counts are size_t, tags in headers int, node
+// and element tags size_t.
 #include <cstdlib>
 
 #include "io/msh_sections.h"
@@ -8,22 +9,46 @@ namespace geomesh {
 
 namespace {
 
-// Bounding box of an entity: from its geometry when it has one, else from its mesh nodes.
-BoundingBox entityBox(const Model& model, const Mesh& mesh, EntityId e) {
-  BoundingBox box = model.boundingBox(e);
-  if (!box.empty()) return box;
-  if (const EntityMesh* em = mesh.find(e)) {
-    for (NodeIndex n : em->nodes) box.include(mesh.node(n));
-    for (const ElementBlock& b : em->blocks)
-      for (NodeIndex n : b.nodes) box.include(mesh.node(n));
-  }
+// Box of the nodes of an entity (or piece) and of its elements; the origin when it has none.
+BoundingBox meshBox(const Mesh& mesh, const std::vector<NodeIndex>& nodes,
+                    const std::vector<ElementBlock>& blocks) {
+  BoundingBox box;
+  for (NodeIndex n : nodes) box.include(mesh.node(n));
+  for (const ElementBlock& b : blocks)
+    for (NodeIndex n : b.nodes) box.include(mesh.node(n));
   if (box.empty()) box.include(Vec3{});
   return box;
+}
+
+// Bounding box of an entity: from its geometry when it has one, else from its mesh nodes.
+BoundingBox entityBox(const Model& model, const Mesh& mesh, EntityId e) {
+  const BoundingBox box = model.boundingBox(e);
+  if (!box.empty()) return box;
+  const EntityMesh* em = mesh.find(e);
+  return em ? meshBox(mesh, em->nodes, em->blocks) : meshBox(mesh, {}, {});
 }
 
 void writeTagList(MshEncoder& out, const std::vector<int>& tags) {
   out.size(tags.size());
   for (int t : tags) out.integer(t);
+}
+
+// What follows the tag (and for pieces the parent and partitions) of an entity: its box (one
+// corner for points), its physical groups and, above points, its bounding entities.
+void writeBoxGroupsAndBoundary(MshEncoder& out, int dim, const BoundingBox& box,
+                               const std::vector<int>& physicals,
+                               const std::vector<int>& bounding) {
+  out.real(box.min.x);
+  out.real(box.min.y);
+  out.real(box.min.z);
+  if (dim > 0) {
+    out.real(box.max.x);
+    out.real(box.max.y);
+    out.real(box.max.z);
+  }
+  writeTagList(out, physicals);
+  if (dim > 0) writeTagList(out, bounding);
+  out.endLine(true);
 }
 
 // Signed bounding entities as Gmsh lists them: a curve's start point positive, its end point
@@ -37,18 +62,8 @@ std::vector<int> boundingEntities(const Model& model, EntityId e) {
 
 void writeEntity(MshEncoder& out, const Model& model, const Mesh& mesh, EntityId e) {
   out.integer(e.tag);
-  const BoundingBox box = entityBox(model, mesh, e);
-  out.real(box.min.x);
-  out.real(box.min.y);
-  out.real(box.min.z);
-  if (e.dim > 0) {
-    out.real(box.max.x);
-    out.real(box.max.y);
-    out.real(box.max.z);
-  }
-  writeTagList(out, model.physicalTagsOf(e));
-  if (e.dim > 0) writeTagList(out, boundingEntities(model, e));
-  out.endLine(true);
+  writeBoxGroupsAndBoundary(out, e.dim, entityBox(model, mesh, e), model.physicalTagsOf(e),
+                            e.dim > 0 ? boundingEntities(model, e) : std::vector<int>{});
 }
 
 void writeEntities(MshEncoder& out, const Model& model, const Mesh& mesh,
@@ -60,6 +75,29 @@ void writeEntities(MshEncoder& out, const Model& model, const Mesh& mesh,
   out.endLine();
   for (EntityId e : content.entities) writeEntity(out, model, mesh, e);
   endSection(out, "$EndEntities\n");
+}
+
+// $PartitionedEntities: the pieces, each with its parent entity and its partitions; no ghost
+// entities.
+void writePartitionedEntities(MshEncoder& out, const Mesh& mesh, const MshContent& content) {
+  std::size_t counts[4] = {};
+  for (const PartitionEntity* piece : content.pieces) ++counts[piece->id.dim];
+  out.text("$PartitionedEntities\n");
+  out.size(static_cast<std::size_t>(content.partitions->count));
+  out.endLine();
+  out.size(0);
+  out.endLine();
+  for (std::size_t c : counts) out.size(c);
+  out.endLine();
+  for (const PartitionEntity* piece : content.pieces) {
+    out.integer(piece->id.tag);
+    out.integer(piece->parent.dim);
+    out.integer(piece->parent.tag);
+    writeTagList(out, piece->partitions);
+    writeBoxGroupsAndBoundary(out, piece->id.dim, meshBox(mesh, piece->nodes, piece->blocks),
+                              piece->physicals, piece->boundary);
+  }
+  endSection(out, "$EndPartitionedEntities\n");
 }
 
 void writeNodes(MshEncoder& out, const Mesh& mesh, const MshContent& content) {
@@ -118,6 +156,7 @@ void writeElements(MshEncoder& out, const MshContent& content) {
 void writeMsh41Body(MshEncoder& out, const Model& model, const Mesh& mesh,
                     const MshContent& content) {
   writeEntities(out, model, mesh, content);
+  if (content.partitions) writePartitionedEntities(out, mesh, content);
   writeNodes(out, mesh, content);
   writeElements(out, content);
   writePeriodic(out, mesh, content, false);

@@ -22,9 +22,9 @@ std::set<EntityId> physicalEntities(const Model& model) {
   return out;
 }
 
-std::vector<const ElementBlock*> blocksByType(const EntityMesh& em) {
+std::vector<const ElementBlock*> blocksByType(const std::vector<ElementBlock>& blocks) {
   std::vector<const ElementBlock*> out;
-  for (const ElementBlock& b : em.blocks)
+  for (const ElementBlock& b : blocks)
     if (b.size() > 0) out.push_back(&b);
   std::sort(out.begin(), out.end(), [](const ElementBlock* a, const ElementBlock* b) {
     return static_cast<int>(a->type) < static_cast<int>(b->type);
@@ -39,9 +39,19 @@ void checkNodeIndices(const Mesh& mesh, EntityId e, std::span<const NodeIndex> n
                                   std::to_string(n) + ", which does not exist");
 }
 
+// Every node of a saved element has a tag in the file.
+void checkElementNodesSaved(const MshContent& content, const char* otherwise) {
+  for (const MshElementBlock& b : content.elementBlocks)
+    for (NodeIndex n : b.block->nodes)
+      if (content.nodeTag[n] == 0)
+        throw std::invalid_argument("node " + std::to_string(n) + " of an element of " +
+                                    describe(b.entity) + " " + otherwise);
+}
+
 }  // namespace
 
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) {
+  if (mesh.partitions()) return selectPartitionedContent(model, mesh, saveAll, 0);
   MshContent content;
   for (EntityId e : model.entities(-1)) content.entities.insert(e);
   for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
@@ -52,7 +62,7 @@ MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) 
   for (EntityId e : content.entities) {
     const EntityMesh* em = mesh.find(e);
     if (!em || (physicalOnly && !physical.contains(e))) continue;
-    for (const ElementBlock* b : blocksByType(*em)) {
+    for (const ElementBlock* b : blocksByType(em->blocks)) {
       checkNodeIndices(mesh, e, b->nodes);
       content.elementBlocks.push_back({e, b});
       content.elementCount += b->size();
@@ -77,11 +87,49 @@ MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) 
       content.nodeBlocks.push_back(std::move(block));
   }
 
-  for (const MshElementBlock& b : content.elementBlocks)
-    for (NodeIndex n : b.block->nodes)
-      if (content.nodeTag[n] == 0)
-        throw std::invalid_argument("node " + std::to_string(n) + " of an element of " +
-                                    describe(b.entity) + " is held by no entity");
+  checkElementNodesSaved(content, "is held by no entity");
+  return content;
+}
+
+MshContent selectPartitionedContent(const Model& model, const Mesh& mesh, bool saveAll,
+                                    int onlyPartition) {
+  const MeshPartitions& partitions = *mesh.partitions();
+  MshContent content;
+  content.partitions = &partitions;
+  for (EntityId e : model.entities(-1)) content.entities.insert(e);
+  for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
+  const bool physicalOnly =
+      !saveAll && (!model.physicalGroups().empty() || !partitions.physicalGroups.empty());
+  for (const PartitionEntity& piece : partitions.entities) {
+    const auto& parts = piece.partitions;
+    if (onlyPartition > 0 && std::find(parts.begin(), parts.end(), onlyPartition) == parts.end())
+      continue;
+    content.pieces.push_back(&piece);
+  }
+
+  std::vector<char> used(mesh.nodeCount(), physicalOnly ? 0 : 1);
+  for (const PartitionEntity* piece : content.pieces) {
+    if (physicalOnly && piece->physicals.empty()) continue;
+    for (const ElementBlock* b : blocksByType(piece->blocks)) {
+      checkNodeIndices(mesh, piece->id, b->nodes);
+      content.elementBlocks.push_back({piece->id, b, piece});
+      content.elementCount += b->size();
+      for (NodeIndex n : b->nodes) used[n] = 1;
+    }
+  }
+  content.nodeTag.assign(mesh.nodeCount(), 0);
+  for (const PartitionEntity* piece : content.pieces) {
+    MshNodeBlock block{piece->id, {}};
+    checkNodeIndices(mesh, piece->id, piece->nodes);
+    for (NodeIndex n : piece->nodes)
+      if (used[n] && content.nodeTag[n] == 0) {
+        content.nodeTag[n] = ++content.nodeCount;
+        block.nodes.push_back(n);
+      }
+    if (!physicalOnly || !piece->physicals.empty() || !block.nodes.empty())
+      content.nodeBlocks.push_back(std::move(block));
+  }
+  checkElementNodesSaved(content, "is in no saved piece");
   return content;
 }
 

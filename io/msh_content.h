@@ -17,9 +17,12 @@ struct MshNodeBlock {
   std::vector<NodeIndex> nodes;
 };
 
+// In a partitioned file, blocks belong to pieces of the partitions (`piece`), whose tags are
+// those of `entity`.
 struct MshElementBlock {
   EntityId entity;
   const ElementBlock* block = nullptr;
+  const PartitionEntity* piece = nullptr;
 };
 
 struct MshContent {
@@ -28,7 +31,9 @@ struct MshContent {
   std::vector<MshElementBlock> elementBlocks;  // by (dim, tag), then element type
   std::size_t nodeCount = 0;
   std::size_t elementCount = 0;
-  std::set<EntityId> entities;  // of the model and of the mesh
+  std::set<EntityId> entities;                 // of the model and of the mesh
+  const MeshPartitions* partitions = nullptr;  // set when the file is partitioned
+  std::vector<const PartitionEntity*> pieces;  // saved pieces, ordered by (dim, tag)
 };
 
 // With physical groups and !saveAll, only elements of entities in a physical group are saved;
@@ -36,5 +41,10 @@ struct MshContent {
 // saved element. Otherwise every entity has a node block, possibly empty. Throws
 // std::invalid_argument when an element uses a node that no entity holds.
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll);
+// For a partitioned mesh: the same choice over its pieces, a piece being in the groups of
+// PartitionEntity::physicals; `onlyPartition` > 0 keeps the pieces of that partition only (one
+// file per partition).
+MshContent selectPartitionedContent(const Model& model, const Mesh& mesh, bool saveAll,
+                                    int onlyPartition);
 
 }  // namespace geomesh

@@ -6,8 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "kernel/model.h"
 #include "io/msh_decoder.h"
+#include "kernel/model.h"
 #include "mesh/core/mesh.h"
 
 namespace geomesh {
@@ -29,6 +29,9 @@ struct MshReadState {
 };
 
 void readMsh41Entities(MshDecoder& in, MshReadState& state);
+// The pieces of a partitioned file become the model's entities, in place of those of
+// $Entities.
+void readMsh41PartitionedEntities(MshDecoder& in, MshReadState& state);
 void readMsh41Nodes(MshDecoder& in, MshReadState& state);
 void readMsh41Elements(MshDecoder& in, MshReadState& state);
 void readMsh22Nodes(MshDecoder& in, MshReadState& state);

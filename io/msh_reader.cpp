@@ -12,8 +12,7 @@ namespace geomesh {
 
 void MshReadState::addToPhysical(int dim, int group, int entity) {
   std::vector<int>& members = physicalMembers[{dim, group}];
-  if (std::find(members.begin(), members.end(), entity) == members.end())
-    members.push_back(entity);
+  if (std::find(members.begin(), members.end(), entity) == members.end()) members.push_back(entity);
 }
 
 NodeIndex MshReadState::node(MshDecoder& in, std::uint64_t tag) const {
@@ -36,8 +35,8 @@ void expectSectionEnd(MshDecoder& in, const char* marker) {
   if (in.atEnd()) in.fail(std::string("missing ") + marker);
   const std::string_view line = in.line();
   if (line != marker)
-    in.fail("expected " + std::string(marker) + ", found '" +
-            std::string(line.substr(0, 40)) + "'");
+    in.fail("expected " + std::string(marker) + ", found '" + std::string(line.substr(0, 40)) +
+            "'");
 }
 
 namespace {
@@ -114,7 +113,7 @@ void readSection(MshDecoder& in, MshReadState& state, int major, std::string_vie
   if (major == 2 && name == "Elements") return readMsh22Elements(in, state);
   if (major == 4 && name == "Periodic") return readMsh41Periodic(in, state);
   if (major == 2 && name == "Periodic") return readMsh22Periodic(in, state);
-  if (name == "PartitionedEntities") in.fail("partitioned meshes are not supported");
+  if (major == 4 && name == "PartitionedEntities") return readMsh41PartitionedEntities(in, state);
   in.skipPast("$End" + name);  // data we do not use: post-processing views...
 }
 

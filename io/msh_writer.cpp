@@ -1,6 +1,7 @@
 // The MSH writer: $MeshFormat, $PhysicalNames, each version's body, via a temporary file.
 #include "io/msh_writer.h"
 
+#include <map>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
@@ -24,12 +25,17 @@ void endSection(MshEncoder& out, const char* endMarker) {
   out.text(endMarker);
 }
 
-void writePhysicalNames(MshEncoder& out, const Model& model) {
+void writePhysicalNames(MshEncoder& out, const Model& model, const MeshPartitions* partitions) {
+  std::map<EntityId, const PhysicalGroup*> groups;
+  for (const auto& [id, group] : model.physicalGroups()) groups[id] = &group;
+  if (partitions)
+    for (const PhysicalGroup& group : partitions->physicalGroups)
+      groups[{group.dim, group.tag}] = &group;
   std::string lines;
   std::size_t count = 0;
-  for (const auto& [id, group] : model.physicalGroups()) {
-    if (group.name.empty()) continue;
-    lines += std::to_string(id.dim) + " " + std::to_string(id.tag) + " \"" + group.name + "\"\n";
+  for (const auto& [id, group] : groups) {
+    if (group->name.empty()) continue;
+    lines += std::to_string(id.dim) + " " + std::to_string(id.tag) + " \"" + group->name + "\"\n";
     ++count;
   }
   if (count == 0) return;
@@ -42,14 +48,17 @@ void writeMsh(std::ostream& out, const Model& model, const Mesh& mesh,
   if (!v41 && options.version != 2.2 && options.version != 2)
     throw std::invalid_argument("unsupported MSH version " + std::to_string(options.version) +
                                 " (4.1 and 2.2 are supported)");
-  const MshContent content = selectMshContent(model, mesh, options.saveAll);
+  const MshContent content =
+      mesh.partitions()
+          ? selectPartitionedContent(model, mesh, options.saveAll, options.onlyPartition)
+          : selectMshContent(model, mesh, options.saveAll);
   MshEncoder encoder(out, options.binary);
   writeMeshFormat(encoder, v41 ? "4.1" : "2.2");
-  writePhysicalNames(encoder, model);
+  writePhysicalNames(encoder, model, mesh.partitions());
   if (v41)
     writeMsh41Body(encoder, model, mesh, content);
   else
-    writeMsh22Body(encoder, model, mesh, content, options.saveAll);
+    writeMsh22Body(encoder, model, mesh, content, options);
   encoder.flush();
 }
 

@@ -13,6 +13,10 @@ struct MshWriteOptions {
   bool saveAll = false;  // Mesh.SaveAll: also save elements outside physical groups
   bool binary = false;   // Mesh.Binary
   double version = 4.1;  // Mesh.MshFileVersion: 4.1 or 2.2
+  // Partitioned meshes: Mesh.PartitionOldStyleMsh2 (MSH 2.2 elements carry the tag of the
+  // model entity, not of the piece); a partition number > 0 saves that partition only.
+  bool partitionOldStyle = true;
+  int onlyPartition = 0;
 };
 
 // Writes the mesh in Gmsh's MSH format. When the model has physical groups and saveAll is

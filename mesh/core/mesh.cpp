@@ -68,7 +68,8 @@ std::size_t Mesh::dropUnheldNodes() {
     for (ElementBlock& b : em.blocks)
       for (NodeIndex& n : b.nodes) n = renumbered[n];
     if (em.periodic)
-      for (auto& [here, there] : em.periodic->nodes) here = renumbered[here], there = renumbered[there];
+      for (auto& [here, there] : em.periodic->nodes)
+        here = renumbered[here], there = renumbered[there];
   }
   return count - next;
 }
@@ -77,6 +78,7 @@ void Mesh::clear() {
   coords_.clear();
   sizes_.clear();
   entities_.clear();
+  partitions_.reset();
 }
 
 }  // namespace geomesh

@@ -51,6 +51,25 @@ struct EntityMesh {
   std::size_t elementCount() const;
 };
 
+// A piece of a model entity inside one or more partitions, as a partitioned mesh file holds
+// it: the pieces form a boundary representation of the partitions of their own.
+struct PartitionEntity {
+  EntityId id;                   // numbered after the tags of the model's entities of id.dim
+  EntityId parent;               // the model entity it is a piece of, of id.dim or higher
+  std::vector<int> partitions;   // ascending, numbered from 1
+  std::vector<int> physicals;    // physical tags it is written under
+  std::vector<int> boundary;     // tags of pieces of dimension id.dim - 1 that bound it
+  std::vector<NodeIndex> nodes;  // the nodes classified on it
+  std::vector<ElementBlock> blocks;
+};
+
+// A partitioned mesh: every node and element of the entity meshes, placed on the pieces.
+struct MeshPartitions {
+  int count = 0;
+  std::vector<PartitionEntity> entities;      // ordered by (dim, tag)
+  std::vector<PhysicalGroup> physicalGroups;  // one per partition set (PartitionCreatePhysicals)
+};
+
 // A mesh: node coordinates in one contiguous array, per-node attributes beside it, and a
 // mesh per model entity.
 class Mesh {
@@ -89,6 +108,11 @@ class Mesh {
   const std::map<EntityId, EntityMesh>& entities() const { return entities_; }
   std::size_t elementCount(int dim) const;  // dim -1: all
   void clear();
+
+  // Set by partitioning; any change of the mesh afterwards must drop them (clearPartitions).
+  const MeshPartitions* partitions() const { return partitions_ ? &*partitions_ : nullptr; }
+  void setPartitions(MeshPartitions p) { partitions_ = std::move(p); }
+  void clearPartitions() { partitions_.reset(); }
   // Drops the nodes no entity holds (left over when a mesher removes a node it had added),
   // renumbering the others in their order everywhere they appear. Returns how many went.
   std::size_t dropUnheldNodes();
@@ -97,6 +121,7 @@ class Mesh {
   std::vector<double> coords_;
   std::vector<double> sizes_;  // empty, or one per node
   std::map<EntityId, EntityMesh> entities_;
+  std::optional<MeshPartitions> partitions_;
 };
 
 }  // namespace geomesh

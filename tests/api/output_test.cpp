@@ -38,8 +38,8 @@ TEST(OutputFormat, ANameWinsOverTheExtension) {
   OptionRegistry options;
   EXPECT_EQ(api::outputFormat(options, "a.whatever", "msh22").name(), "msh22");
   EXPECT_EQ(api::outputFormat(options, "a.msh", "msh").name(), "msh41");
-  EXPECT_EQ(refusal(options, "a.msh", "nope").rfind(
-                "unsupported output format 'nope' (supported: " + formatNameList() + ")", 0),
+  EXPECT_EQ(refusal(options, "a.msh", "nope")
+                .rfind("unsupported output format 'nope' (supported: " + formatNameList() + ")", 0),
             0u);
 }
 
@@ -82,6 +82,36 @@ TEST(WriteMesh, WritesInTheChosenFormatAndFollowsSaveAll) {
   api::writeMesh(session, path.string(), *findFormatByName("msh22"));
   EXPECT_GT(slurp(path).size(), onlyPhysical.size());
   EXPECT_FALSE(fs::exists(path.string() + ".partial"));
+  fs::remove(path);
+}
+
+class WarningSink final : public MessageSink {
+ public:
+  void info(std::string_view) override {}
+  void warning(std::string_view m) override { warnings.emplace_back(m); }
+  std::vector<std::string> warnings;
+};
+
+TEST(WriteMesh, WarnsAboutMeshedEntitiesLeftOutOfPhysicalGroups) {
+  WarningSink log;
+  Session session(log);
+  GeometryFactory& geo = session.factory();
+  geo.addPoint(1, {0, 0, 0}, 0.5);
+  geo.addPoint(2, {1, 0, 0}, 0.5);
+  geo.addPoint(3, {2, 0, 0}, 0.5);
+  geo.addLine(1, 1, 2);
+  geo.addLine(2, 2, 3);
+  geo.addPhysicalGroup(1, 1, "", {1});  // curve 2 is in no group
+  api::generate(session, 1);
+  const fs::path path = scratch::path("api-left-out.msh");
+  api::writeMesh(session, path.string(), *findFormatByName("msh41"));
+  ASSERT_EQ(log.warnings.size(), 1u);
+  EXPECT_NE(log.warnings[0].find("curve 2 (2 elements)"), std::string::npos) << log.warnings[0];
+  EXPECT_NE(log.warnings[0].find("-save_all"), std::string::npos);
+  EXPECT_EQ(log.warnings[0].find("point"), std::string::npos) << "points have no group at all";
+  session.options().setNumber("Mesh.SaveAll", 1);
+  api::writeMesh(session, path.string(), *findFormatByName("msh41"));
+  EXPECT_EQ(log.warnings.size(), 1u) << "nothing is left out with SaveAll";
   fs::remove(path);
 }
 

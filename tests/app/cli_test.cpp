@@ -98,7 +98,9 @@ TEST_F(Cli, MissingFileIsAnError) {
   EXPECT_FALSE(fs::exists(dir_ / "absent.msh"));
 }
 
-TEST_F(Cli, NoFileIsAnError) { EXPECT_EQ(run({"-2"}), 1); }
+TEST_F(Cli, NoFileIsAnError) {
+  EXPECT_EQ(run({"-2"}), 1);
+}
 
 TEST_F(Cli, VersionAndHelp) {
   EXPECT_EQ(run({"-version"}), 0);
@@ -130,19 +132,18 @@ TEST_F(Cli, ScriptOptionsOverrideCommandLineFlags) {
             0)
       << err_.str();
   EXPECT_EQ(out_.str(), "square ready\nfactor 1 algorithm 5\n");
-  ASSERT_EQ(run({plain.string(), "-2", "-algo", "del2d", "-o", (dir_ / "plain.msh").string()}),
-            0)
+  ASSERT_EQ(run({plain.string(), "-2", "-algo", "del2d", "-o", (dir_ / "plain.msh").string()}), 0)
       << err_.str();
   EXPECT_EQ(slurp(dir_ / "fixed.msh"), slurp(dir_ / "plain.msh"));
-  ASSERT_EQ(run({plain.string(), "-2", "-clscale", "0.5", "-o", (dir_ / "fine.msh").string()}),
-            0)
+  ASSERT_EQ(run({plain.string(), "-2", "-clscale", "0.5", "-o", (dir_ / "fine.msh").string()}), 0)
       << err_.str();
   EXPECT_GT(slurp(dir_ / "fine.msh").size(), 2 * slurp(dir_ / "plain.msh").size());
 }
 
 TEST_F(Cli, SetNumberAndSetStringAlsoSetOptions) {
-  fs::path geo = write("p.geo", "Printf(\"%g\", Mesh.Algorithm);\n"
-                                "Printf(StrCat(\"name \", General.DefaultFileName));\n");
+  fs::path geo = write("p.geo",
+                       "Printf(\"%g\", Mesh.Algorithm);\n"
+                       "Printf(StrCat(\"name \", General.DefaultFileName));\n");
   ASSERT_EQ(run({geo.string(), "-0", "-setnumber", "Mesh.Algorithm", "5", "-setstring",
                  "General.DefaultFileName", "plate.geo"}),
             0)
@@ -152,7 +153,8 @@ TEST_F(Cli, SetNumberAndSetStringAlsoSetOptions) {
 
 TEST_F(Cli, MeshFailureWritesNoFile) {
   // A loop whose curves do not close is refused with the line of the loop.
-  fs::path geo = write("open.geo", R"(Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {0, 1, 0};
+  fs::path geo =
+      write("open.geo", R"(Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {0, 1, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3};
 Curve Loop(1) = {1, 2};
 Plane Surface(1) = {1};
@@ -187,6 +189,28 @@ TEST_F(Cli, CheckAcceptsAWrittenMesh) {
   ASSERT_EQ(run({geo.string(), "-2", "-save_all", "-o", (dir_ / "sq.msh").string()}), 0);
   EXPECT_EQ(run({(dir_ / "sq.msh").string(), "-check"}), 0) << err_.str();
   EXPECT_NE(err_.str().find("no problem"), std::string::npos) << err_.str();
+}
+
+TEST_F(Cli, PartitionedMeshesPassTheCheckAndSplitIntoFiles) {
+  fs::path geo = write("sq.geo", kSquare);
+  const std::string whole = (dir_ / "sq.msh").string();
+  ASSERT_EQ(run({geo.string(), "-2", "-part", "3", "-save_all", "-o", whole}), 0) << err_.str();
+  EXPECT_NE(err_.str().find("Done partitioning mesh into 3 parts"), std::string::npos);
+  EXPECT_EQ(run({whole, "-check"}), 0) << err_.str();
+  // A mesh file partitioned anew, one file per partition.
+  ASSERT_EQ(run({whole, "-part", "2", "-part_split", "-o", (dir_ / "two.msh").string()}), 0)
+      << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "two_1.msh"));
+  EXPECT_TRUE(fs::exists(dir_ / "two_2.msh"));
+  EXPECT_FALSE(fs::exists(dir_ / "two.msh"));
+}
+
+TEST_F(Cli, MorePartitionsThanElementsFailsWithBothNumbersAndNoFile) {
+  fs::path geo = write("sq.geo", kSquare);
+  const fs::path out = dir_ / "many.msh";
+  EXPECT_EQ(run({geo.string(), "-2", "-part", "5000", "-o", out.string()}), 1);
+  EXPECT_NE(err_.str().find("cannot make 5000 partitions of "), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(Cli, CheckReportsANonConformingMesh) {
@@ -270,7 +294,8 @@ TEST_F(Cli, MalformedMeshFileIsAnErrorWithItsLine) {
 TEST_F(Cli, ConvertsMsh41ToMsh22) {
   fs::path geo = write("sq.geo", kSquare);
   ASSERT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.msh").string()}), 0);
-  ASSERT_EQ(run({(dir_ / "sq.msh").string(), "-o", (dir_ / "sq22.msh").string(), "-format", "msh22"}), 0)
+  ASSERT_EQ(
+      run({(dir_ / "sq.msh").string(), "-o", (dir_ / "sq22.msh").string(), "-format", "msh22"}), 0)
       << err_.str();
   std::ifstream in(dir_ / "sq22.msh");
   std::string line;
@@ -322,8 +347,7 @@ Physical Surface("pentagon") = {1};
   // Coordinates are written with 16 significant digits (as the reference writes them), so
   // the two meshes agree in counts, not to the last bit.
   EXPECT_EQ(sectionHeader(dir_ / "a.msh", "$Nodes"), sectionHeader(dir_ / "b.msh", "$Nodes"));
-  EXPECT_EQ(sectionHeader(dir_ / "a.msh", "$Elements"),
-            sectionHeader(dir_ / "b.msh", "$Elements"));
+  EXPECT_EQ(sectionHeader(dir_ / "a.msh", "$Elements"), sectionHeader(dir_ / "b.msh", "$Elements"));
 }
 
 }  // namespace
@@ -353,8 +377,8 @@ For i In {1:200}
   EndFor
 EndFor
 )");
-  const std::string cmd = "ulimit -v 400000; " + std::string(GEOMESH_BINARY) + " " +
-                          geo.string() + " -2 > " + (dir_ / "log.txt").string() + " 2>&1";
+  const std::string cmd = "ulimit -v 400000; " + std::string(GEOMESH_BINARY) + " " + geo.string() +
+                          " -2 > " + (dir_ / "log.txt").string() + " 2>&1";
   const int status = std::system(("sh -c '" + cmd + "'").c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 1);
@@ -404,10 +428,10 @@ namespace {
 
 TEST_F(Cli, AnUnsupportedOutputExtensionIsRefusedBeforeMeshing) {
   fs::path geo = write("sq.geo", kSquare);
-  EXPECT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.stl").string()}), 1);
-  EXPECT_NE(err_.str().find("'.stl' format is not supported"), std::string::npos) << err_.str();
+  EXPECT_EQ(run({geo.string(), "-2", "-o", (dir_ / "sq.wrl").string()}), 1);
+  EXPECT_NE(err_.str().find("'.wrl' format is not supported"), std::string::npos) << err_.str();
   EXPECT_EQ(err_.str().find("Meshing 1D"), std::string::npos) << err_.str();
-  EXPECT_FALSE(fs::exists(dir_ / "sq.stl"));
+  EXPECT_FALSE(fs::exists(dir_ / "sq.wrl"));
   // An explicit format writes MSH whatever the name.
   EXPECT_EQ(run({geo.string(), "-2", "-format", "msh41", "-o", (dir_ / "sq.mesh41").string()}), 0);
   EXPECT_TRUE(fs::exists(dir_ / "sq.mesh41"));
@@ -421,7 +445,8 @@ namespace {
 
 TEST_F(Cli, SystemCallsAreRefusedUnlessAllowed) {
   const fs::path marker = dir_ / "ran.txt";
-  fs::path geo = write("sys.geo", "SystemCall \"touch " + marker.string() + "\";\nPrintf(\"on\");\n");
+  fs::path geo =
+      write("sys.geo", "SystemCall \"touch " + marker.string() + "\";\nPrintf(\"on\");\n");
   ASSERT_EQ(run({geo.string(), "-0"}), 0) << err_.str();
   EXPECT_FALSE(fs::exists(marker));
   EXPECT_EQ(out_.str(), "on\n");

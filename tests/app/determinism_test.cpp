@@ -43,5 +43,13 @@ TEST(Determinism, HolesScriptIsStable) {
   EXPECT_EQ(meshBytes(script, {"-nt", "2"}, "e"), first);
 }
 
+TEST(Determinism, PartitionedFilesDoNotDependOnThreads) {
+  const std::string script = std::string(GEOMESH_SOURCE_DIR) + "/tutorials/t1.geo";
+  const std::string first = meshBytes(script, {"-part", "5", "-nt", "1"}, "f");
+  ASSERT_NE(first.find("$PartitionedEntities"), std::string::npos);
+  EXPECT_EQ(meshBytes(script, {"-part", "5", "-nt", "2"}, "g"), first);
+  EXPECT_EQ(meshBytes(script, {"-part", "5", "-nt", "1"}, "h"), first);
+}
+
 }  // namespace
 }  // namespace geomesh

@@ -155,12 +155,12 @@ TEST_F(ModelCommands, SaveUnrolledGeometry) {
 
 TEST_F(ModelCommands, SaveInAnUnwrittenFormatWarnsAndWritesNothing) {
   ScriptRun run;
-  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.stl\";\nPrint \"shot.png\";\n");
-  EXPECT_FALSE(fs::exists(dir_ / "out.stl"));
+  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.wrl\";\nPrint \"shot.png\";\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.wrl"));
   EXPECT_FALSE(fs::exists(dir_ / "shot.png"));
   ASSERT_EQ(run.log.warnings.size(), 2u);
   EXPECT_NE(run.log.warnings[0].find("cannot write"), std::string::npos);
-  EXPECT_NE(run.log.warnings[0].find("out.stl"), std::string::npos);
+  EXPECT_NE(run.log.warnings[0].find("out.wrl"), std::string::npos);
 }
 
 TEST_F(ModelCommands, SaveWritesEveryFormatOfTheTable) {
@@ -224,6 +224,22 @@ TEST_F(ModelCommands, MergeReadsMsh1And3Files) {
   }
 }
 
+TEST_F(ModelCommands, MergeReadsTheOtherMeshFormatsOfTheTable) {
+  {
+    ScriptRun first;
+    runMain(first, std::string(kUnitSquare) +
+                       "Mesh 2;\nSave \"square.vtk\";\nSave \"square.stl\";\n"
+                       "Save \"square.ply\";\nSave \"square.off\";\n");
+  }
+  for (const char* file : {"square.vtk", "square.stl", "square.ply", "square.off"}) {
+    ScriptRun run;
+    runMain(run, "Merge \"" + std::string(file) + "\";\n");
+    EXPECT_TRUE(run.log.warnings.empty()) << file;
+    EXPECT_GT(run.session.mesh().elementCount(2), 20u) << file;
+    EXPECT_NEAR(triangleArea(run.session.mesh()), 1.0, 1e-12) << file;
+  }
+}
+
 TEST_F(ModelCommands, MergeOfAMeshBesideGeometryIsRefused) {
   {
     ScriptRun first;
@@ -241,9 +257,9 @@ TEST_F(ModelCommands, MergeOfAMeshBesideGeometryIsRefused) {
 
 TEST_F(ModelCommands, MergeOfOtherFilesWarnsAndMissingMeshesFail) {
   ScriptRun run;
-  runMain(run, "Merge \"surface.stl\";\n");
+  runMain(run, "Merge \"surface.wrl\";\n");
   ASSERT_EQ(run.log.warnings.size(), 1u);
-  EXPECT_NE(run.log.warnings[0].find("'Merge' of 'surface.stl' is not supported yet"),
+  EXPECT_NE(run.log.warnings[0].find("'Merge' of 'surface.wrl' is not supported yet"),
             std::string::npos);
   ScriptRun missing;
   EXPECT_THROW(runMain(missing, "Merge \"nothing.msh\";\n"), ScriptError);

@@ -15,7 +15,7 @@ constexpr const char* kStatements[] = {
     "Reverse Surface{1};",
     "Save \"x.png\";",
     "RefineMesh;",
-    "Merge \"whatever.stl\";",
+    "Merge \"whatever.wrl\";",
     "Background Mesh View[0];",
     "Periodic Surface{2} = {1};",
 };

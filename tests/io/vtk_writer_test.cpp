@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -52,7 +54,7 @@ TEST(VtkWriter, IsFoundByNameExtensionAndCode) {
   ASSERT_NE(findFormatByName("vtk"), nullptr);
   EXPECT_EQ(findFormatByExtension(".vtk", 4.1), findFormatByName("vtk"));
   EXPECT_EQ(findFormatByCode(16, 4.1), findFormatByName("vtk"));
-  EXPECT_EQ(findReaderByExtension(".vtk"), nullptr);  // written only
+  EXPECT_EQ(findReaderByExtension(".vtk"), findFormatByName("vtk"));
   EXPECT_NE(formatNameList().find("vtk"), std::string::npos);
 }
 
@@ -135,6 +137,70 @@ TEST(VtkWriter, ElementsAboveOrderTwoAreRefusedBeforeAnythingIsWritten) {
   std::ostringstream out;
   EXPECT_THROW(findFormatByName("vtk")->write(out, model, mesh, {}), std::invalid_argument);
   EXPECT_EQ(out.str(), "");
+}
+
+// The big-endian value of type T at `at` in `bytes`.
+template <class T>
+T bigEndianAt(const std::string& bytes, std::size_t at) {
+  unsigned char raw[sizeof(T)];
+  for (std::size_t k = 0; k < sizeof(T); ++k)
+    raw[k] = static_cast<unsigned char>(bytes.at(at + sizeof(T) - 1 - k));
+  T v;
+  std::memcpy(&v, raw, sizeof(T));
+  return v;
+}
+
+// The `count` big-endian values of type T after the line `header` (which must end the line).
+template <class T>
+std::vector<T> binarySection(const std::string& bytes, const std::string& header,
+                             std::size_t count) {
+  const std::size_t start = bytes.find(header);
+  EXPECT_NE(start, std::string::npos) << header;
+  std::vector<T> values;
+  for (std::size_t i = 0; i < count; ++i)
+    values.push_back(bigEndianAt<T>(bytes, start + header.size() + i * sizeof(T)));
+  EXPECT_EQ(bytes.at(start + header.size() + count * sizeof(T)), '\n') << header;
+  return values;
+}
+
+std::vector<std::string> words(const std::vector<std::string>& lines) {
+  std::vector<std::string> out;
+  for (const std::string& line : lines) {
+    std::istringstream in(line);
+    for (std::string w; in >> w;) out.push_back(w);
+  }
+  return out;
+}
+
+TEST(VtkWriter, BinaryFormHoldsTheAsciiNumbersBigEndian) {
+  Model model;
+  Mesh mesh;
+  buildSquare(model, mesh, false);
+  mesh.setNode(2, {1.25, 1e-7, -3});
+  const std::string ascii = vtkOf(model, mesh);
+  std::ostringstream out;
+  findFormatByName("vtk")->write(out, model, mesh, {true, true});
+  const std::string binary = out.str();
+  EXPECT_EQ(binary.rfind("# vtk DataFile Version 2.0\ngeomesh mesh\nBINARY\n"
+                         "DATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n",
+                         0),
+            0u);
+  const std::vector<double> points = binarySection<double>(binary, "POINTS 4 double\n", 12);
+  std::vector<std::string> asciiPoints = words(sectionLines(ascii, "POINTS"));
+  ASSERT_EQ(asciiPoints.size(), 12u);
+  for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(points[i], std::stod(asciiPoints[i])) << i;
+  const auto asInts = [](const std::vector<std::string>& w) {
+    std::vector<std::int32_t> v;
+    for (const std::string& s : w) v.push_back(std::stoi(s));
+    return v;
+  };
+  EXPECT_EQ(binarySection<std::int32_t>(binary, "\nCELLS 10 28\n", 28),
+            asInts(words(sectionLines(ascii, "CELLS"))));
+  EXPECT_EQ(binarySection<std::int32_t>(binary, "\nCELL_TYPES 10\n", 10),
+            asInts(sectionLines(ascii, "CELL_TYPES")));
+  EXPECT_EQ(binarySection<std::int32_t>(
+                binary, "CELL_DATA 10\nSCALARS CellEntityIds int 1\nLOOKUP_TABLE default\n", 10),
+            asInts(sectionLines(ascii, "LOOKUP_TABLE")));
 }
 
 }  // namespace

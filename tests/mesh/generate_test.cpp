@@ -142,40 +142,7 @@ TEST(GenerateMesh, SeveralSurfacesShareTheirCommonCurve) {
   EXPECT_NEAR(testing::meshArea(mesh, 1) + testing::meshArea(mesh, 2), 2.0, 1e-12);
 }
 
-// The unit cube: 8 points, 12 lines, 6 planes with outward normals, one volume.
-Model cubeModel(double h) {
-  Model model;
-  const Vec3 corners[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                           {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (int k = 0; k < 8; ++k) model.addPoint({k + 1, corners[k], h});
-  const int faces[6][4] = {{1, 4, 3, 2}, {5, 6, 7, 8}, {1, 2, 6, 5},
-                           {3, 4, 8, 7}, {1, 5, 8, 4}, {2, 3, 7, 6}};
-  std::map<std::pair<int, int>, int> lines;
-  auto line = [&](int a, int b) {
-    if (auto it = lines.find({b, a}); it != lines.end()) return -it->second;
-    const int tag = static_cast<int>(lines.size()) + 1;
-    lines[{a, b}] = tag;
-    model.addCurve(
-        {tag, a, b, std::make_shared<testing::SegmentGeometry>(corners[a - 1], corners[b - 1])});
-    return tag;
-  };
-  ModelVolume volume{1, {{}}};
-  for (int f = 0; f < 6; ++f) {
-    std::vector<Vec3> polygon;
-    std::vector<int> loop;
-    for (int k = 0; k < 4; ++k) {
-      polygon.push_back(corners[faces[f][k] - 1]);
-      loop.push_back(line(faces[f][k], faces[f][(k + 1) % 4]));
-    }
-    const PlaneFit fit = fitPlane(polygon);
-    auto plane = std::make_shared<PlaneGeometry>(fit.origin, fit.normal);
-    for (Vec3 p : polygon) plane->include(p);
-    model.addSurface({f + 1, {loop}, plane, {}, {}});
-    volume.shells[0].push_back(f + 1);
-  }
-  model.addVolume(volume);
-  return model;
-}
+using testing::cubeModel;
 
 TEST(GenerateMesh, CubeSurfacesFollowTheirLoopsAndTheVolumeIsFilled) {
   const Model model = cubeModel(0.25);

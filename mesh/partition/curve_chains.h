@@ -1,0 +1,18 @@
+// Chains of line elements: the connected runs of a curve piece, each in walking order.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+// The lines of `block` grouped into chains: lines are linked through a corner node for which
+// `joins` is true (a node inside the curve, not one of its points). Each chain lists its lines
+// from one end to the other, every line turned to follow the walk; a closed chain starts at
+// its lowest line. Returns a block per chain.
+std::vector<ElementBlock> splitIntoChains(const ElementBlock& block,
+                                          const std::function<bool(NodeIndex)>& joins);
+
+}  // namespace geomesh
