@@ -28,6 +28,10 @@ PartitionTopologyOptions topologyOptions(Session& session) {
     session.log().warning(
         "Mesh.PartitionCreateGhostCells is not supported yet: partitions are written without "
         "ghost cells");
+  if (integerOption(session, "Mesh.PartitionTopologyFile") != 0)
+    session.log().warning(
+        "Mesh.PartitionTopologyFile is not supported yet: no .pro file of the partition "
+        "topology is written");
   return topology;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <span>
 #include <sstream>
 
@@ -66,6 +67,18 @@ void addGroups(const Model& model, const Mesh& mesh, MeshSummary& s) {
     MeshSummary::Group g{group.dim, group.tag, group.name, 0};
     for (int tag : group.entities)
       if (const EntityMesh* em = mesh.find({group.dim, tag})) g.elements += em->elementCount();
+    s.physicalGroups.push_back(g);
+  }
+  // Groups made per partition hold pieces of the partitions, not model entities.
+  const MeshPartitions* partitions = mesh.partitions();
+  if (!partitions) return;
+  std::map<EntityId, const PartitionEntity*> pieces;
+  for (const PartitionEntity& piece : partitions->entities) pieces[piece.id] = &piece;
+  for (const PhysicalGroup& group : partitions->physicalGroups) {
+    MeshSummary::Group g{group.dim, group.tag, group.name, 0};
+    for (int tag : group.entities)
+      if (const auto it = pieces.find({group.dim, tag}); it != pieces.end())
+        for (const ElementBlock& b : it->second->blocks) g.elements += b.size();
     s.physicalGroups.push_back(g);
   }
 }

@@ -77,7 +77,7 @@ FORMATS = [
     Row("mesh", "mesh", [], "medit", False, "all", ("medit:ref", "gmsh:physical")),
     Row("bdf", "bdf", [], "nastran", True, "all", ("nastran:ref", "gmsh:physical")),
     # meshio's CGNS reader takes a single tetrahedron section only.
-    Row("cgns", "cgns", [], None, True, "all", geomesh=False),
+    Row("cgns", "cgns", [], None, True, "all"),
     Row("inp", "inp", [], "abaqus", False, "all", geomesh=False),
     Row("su2", "su2", [], "su2", False, "all", geomesh=False),
 ]

@@ -44,6 +44,7 @@ void writeSu2(std::ostream& out, const Model& model, const Mesh& mesh,
               const MeshWriteOptions& options);
 void writeCgns(const std::string& path, const Model& model, const Mesh& mesh,
                const MeshWriteOptions& options);
+void readCgns(const std::string& path, Model& model, Mesh& mesh);
 
 namespace {
 
@@ -74,7 +75,7 @@ constexpr MeshFormat kFormats[] = {
     {"unv", ".unv", 2, 0.0, writeUnv, readUnv, 2},
     {"mesh", ".mesh", 30, 0.0, writeMedit, readMedit, 2},
     {"bdf", ".bdf .nas", 31, 0.0, writeBdf, readBdf, 2},
-    {"cgns", ".cgns", 32, 0.0, nullptr, nullptr, 2, writeCgns},
+    {"cgns", ".cgns", 32, 0.0, nullptr, nullptr, 2, writeCgns, readCgns},
     {"inp", ".inp", 39, 0.0, writeInp, nullptr, 2},
     {"su2", ".su2", 42, 0.0, writeSu2, nullptr, 1},
 };
@@ -173,7 +174,7 @@ const MeshFormat* findFormatByCode(int code, double version) {
 
 const MeshFormat* findReaderByExtension(std::string_view extension) {
   for (const MeshFormat& format : kFormats)
-    if (format.read && format.hasExtension(extension)) return &format;
+    if (format.reads() && format.hasExtension(extension)) return &format;
   return nullptr;
 }
 
@@ -196,7 +197,7 @@ std::string writtenExtensionList() {
   return listed(&MeshFormat::extensions, &MeshFormat::writes);
 }
 
-std::string readExtensionList() { return listed(&MeshFormat::extensions, &MeshFormat::read); }
+std::string readExtensionList() { return listed(&MeshFormat::extensions, &MeshFormat::reads); }
 
 std::string formatCodeList() {
   std::vector<std::string> codes;
@@ -234,11 +235,15 @@ void writeMeshFile(const std::string& path, const MeshFormat& format, const Mode
 }
 
 void readMeshFile(const std::string& path, const MeshFormat& format, Model& model, Mesh& mesh) {
-  if (!format.read)
+  if (!format.reads())
     throw std::runtime_error("cannot read '" + path + "': " + std::string(format.name()) +
                              " files are only written");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error("cannot open '" + path + "'");
+  if (format.readFile) {
+    file.close();
+    return format.readFile(path, model, mesh);
+  }
   format.read(file, model, mesh, path);
 }
 

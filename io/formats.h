@@ -38,6 +38,9 @@ using MeshReader = void (*)(std::istream& in, Model& model, Mesh& mesh, const st
 // For formats whose library opens the file itself (CGNS): writes a complete file at `path`.
 using MeshFileWriter = void (*)(const std::string& path, const Model& model, const Mesh& mesh,
                                 const MeshWriteOptions& options);
+// For formats whose library opens the file itself (CGNS): replaces `model` and `mesh` by the
+// content of the file at `path`.
+using MeshFileReader = void (*)(const std::string& path, Model& model, Mesh& mesh);
 
 struct MeshFormat {
   std::string_view names;       // accepted by -format, space-separated; the first is its name
@@ -52,8 +55,11 @@ struct MeshFormat {
   // Set instead of `write` for a format written by a library to a path: writeMeshFile gives it
   // a temporary path, renamed once the file is complete.
   MeshFileWriter writeFile = nullptr;
+  // Set instead of `read` for a format read by a library from a path.
+  MeshFileReader readFile = nullptr;
 
   bool writes() const { return write || writeFile; }
+  bool reads() const { return read || readFile; }
 
   std::string_view name() const { return names.substr(0, names.find(' ')); }
   bool isNamed(std::string_view name) const;
@@ -84,8 +90,8 @@ std::string formatCodeList();
 // Writes through writeFileAtomically; throws std::runtime_error naming `path`.
 void writeMeshFile(const std::string& path, const MeshFormat& format, const Model& model,
                    const Mesh& mesh, const MeshWriteOptions& options);
-// Reads with the format's reader; throws std::runtime_error when the file cannot be opened,
-// and the reader's error (MshReadError for MSH) when its content is malformed.
+// Reads with the format's reader (or path reader); throws std::runtime_error when the file
+// cannot be opened, and the reader's error (MshReadError for MSH) when its content is malformed.
 void readMeshFile(const std::string& path, const MeshFormat& format, Model& model, Mesh& mesh);
 
 }  // namespace geomesh

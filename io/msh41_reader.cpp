@@ -1,7 +1,9 @@
 // MSH 4.1 sections: $Entities, $Nodes and $Elements in per-entity blocks.
+#include <algorithm>
 #include <cstdlib>
 
 #include "io/msh_read_state.h"
+#include "mesh/partition/curve_chains.h"
 
 namespace geomesh {
 
@@ -31,19 +33,25 @@ void readEntity(MshDecoder& in, MshReadState& state, int dim) {
   readEntityAfterTag(in, state, dim, tag);
 }
 
-// A piece of a partitioned file: its parent and partitions, then an entity's fields. It is
-// read as an entity of its own, which holds its nodes and elements.
+// A piece of a partitioned file: its parent, partitions, box, groups and bounding pieces.
 void readPartitionedEntity(MshDecoder& in, MshReadState& state, int dim) {
-  const int tag = in.integer();
-  if (tag < 0) in.fail("invalid entity tag " + std::to_string(tag));
-  const int parentDim = in.integer();
-  in.integer();  // parent tag
-  if (parentDim < 0 || parentDim > 3)
-    in.fail("invalid parent dimension " + std::to_string(parentDim));
-  tagList(in);  // partitions
-  if (state.model.contains({dim, tag}))
-    in.fail("partition entity " + std::to_string(tag) + " is defined twice");
-  readEntityAfterTag(in, state, dim, tag);
+  PartitionEntity piece;
+  piece.id = {dim, in.integer()};
+  if (piece.id.tag < 0) in.fail("invalid entity tag " + std::to_string(piece.id.tag));
+  piece.parent.dim = in.integer();
+  piece.parent.tag = in.integer();
+  if (piece.parent.dim < dim || piece.parent.dim > 3 || !state.model.contains(piece.parent))
+    in.fail("partition entity " + std::to_string(piece.id.tag) + " has no parent entity (" +
+            std::to_string(piece.parent.dim) + ", " + std::to_string(piece.parent.tag) + ")");
+  if (state.model.contains(piece.id) || state.mesh.find(piece.id))
+    in.fail("partition entity " + std::to_string(piece.id.tag) + " has the tag of another entity");
+  piece.partitions = tagList(in);
+  for (int i = 0; i < (dim > 0 ? 6 : 3); ++i) in.real();  // the box: derived, not stored
+  piece.physicals = tagList(in);
+  for (int group : piece.physicals) state.addToPhysical(dim, group, piece.id.tag);
+  if (dim > 0) piece.boundary = tagList(in);
+  state.mesh.entity(piece.id);  // holds the piece's nodes and elements while the file is read
+  state.pieces.push_back(std::move(piece));
 }
 
 void readEntityAfterTag(MshDecoder& in, MshReadState& state, int dim, int tag) {
@@ -124,9 +132,9 @@ void readMsh41Entities(MshDecoder& in, MshReadState& state) {
 // The pieces replace the model's entities: they hold every node and element, carry the
 // physical groups, and bound each other.
 void readMsh41PartitionedEntities(MshDecoder& in, MshReadState& state) {
-  state.model.clear();
-  state.physicalMembers.clear();
-  in.size();  // number of partitions
+  const std::uint64_t partitions = in.size();
+  if (partitions == 0 || partitions > 1u << 30) in.fail("invalid number of partitions");
+  state.partitionCount = static_cast<int>(partitions);
   const std::uint64_t ghosts = count(in, 8);
   for (std::uint64_t i = 0; i < ghosts; ++i) {
     in.integer();  // ghost entity tag
@@ -137,6 +145,57 @@ void readMsh41PartitionedEntities(MshDecoder& in, MshReadState& state) {
   for (int dim = 0; dim < 4; ++dim)
     for (std::uint64_t i = 0; i < counts[dim]; ++i) readPartitionedEntity(in, state, dim);
   expectSectionEnd(in, "$EndPartitionedEntities");
+}
+
+// Elements of a piece of the same dimension as its parent are the parent's; a piece inside a
+// higher-dimensional parent (an interface) gives it its nodes and keeps its own elements.
+void attachPartitions(MshReadState& state) {
+  if (state.pieces.empty()) return;
+  MeshPartitions partitions;
+  partitions.count = state.partitionCount;
+  for (PartitionEntity& piece : state.pieces) {
+    const EntityMesh* held = state.mesh.find(piece.id);
+    if (held) {
+      piece.nodes = held->nodes;
+      piece.blocks = held->blocks;
+    }
+    EntityMesh& parent = state.mesh.entity(piece.parent);
+    parent.nodes.insert(parent.nodes.end(), piece.nodes.begin(), piece.nodes.end());
+    if (piece.parent.dim == piece.id.dim)
+      for (const ElementBlock& b : piece.blocks) {
+        ElementBlock& into = parent.block(b.type);
+        into.nodes.insert(into.nodes.end(), b.nodes.begin(), b.nodes.end());
+      }
+    state.mesh.eraseEntity(piece.id);
+    partitions.entities.push_back(std::move(piece));
+  }
+  // A curve's lines come back piece by piece: put them in order along it again.
+  for (const auto& [tag, curve] : state.model.curves()) {
+    EntityMesh* lines = state.mesh.findMutable({1, tag});
+    const EntityMesh* start = state.mesh.find({0, curve.startPoint});
+    if (!lines || !start || start->nodes.empty()) continue;
+    for (ElementBlock& b : lines->blocks) orderAlongCurve(b, start->nodes.front());
+  }
+  // Groups of pieces alone (made per partition) belong to the partitions, not to the model.
+  for (auto it = state.physicalMembers.begin(); it != state.physicalMembers.end();) {
+    const bool ofPieces =
+        !it->second.empty() && std::none_of(it->second.begin(), it->second.end(), [&](int tag) {
+          return state.model.contains({it->first.dim, tag});
+        });
+    std::vector<int>& members = it->second;
+    if (!ofPieces) {
+      std::erase_if(members, [&](int tag) { return !state.model.contains({it->first.dim, tag}); });
+      ++it;
+      continue;
+    }
+    auto name = state.physicalNames.find(it->first);
+    partitions.physicalGroups.push_back({it->first.dim, it->first.tag,
+                                         name == state.physicalNames.end() ? "" : name->second,
+                                         it->second});
+    if (name != state.physicalNames.end()) state.physicalNames.erase(name);
+    it = state.physicalMembers.erase(it);
+  }
+  state.mesh.setPartitions(std::move(partitions));
 }
 
 void readMsh41Nodes(MshDecoder& in, MshReadState& state) {

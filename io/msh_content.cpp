@@ -51,7 +51,6 @@ void checkElementNodesSaved(const MshContent& content, const char* otherwise) {
 }  // namespace
 
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) {
-  if (mesh.partitions()) return selectPartitionedContent(model, mesh, saveAll, 0);
   MshContent content;
   for (EntityId e : model.entities(-1)) content.entities.insert(e);
   for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);

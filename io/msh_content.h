@@ -40,6 +40,7 @@ struct MshContent {
 // an entity's node block is then written when the entity is in a group or has a node used by a
 // saved element. Otherwise every entity has a node block, possibly empty. Throws
 // std::invalid_argument when an element uses a node that no entity holds.
+// Partitions play no part: the entity meshes are saved (what every format but MSH writes).
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll);
 // For a partitioned mesh: the same choice over its pieces, a piece being in the groups of
 // PartitionEntity::physicals; `onlyPartition` > 0 keeps the pieces of that partition only (one

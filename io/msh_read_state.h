@@ -20,6 +20,10 @@ struct MshReadState {
   std::unordered_map<std::uint64_t, NodeIndex> nodeIndex;  // file tag -> mesh node
   std::map<EntityId, std::string> physicalNames;           // (dim, group tag) -> name
   std::map<EntityId, std::vector<int>> physicalMembers;    // (dim, group tag) -> entity tags
+  // A partitioned file: its pieces as $PartitionedEntities lists them (nodes and elements are
+  // read onto entities of the pieces' tags, then moved to their parents).
+  int partitionCount = 0;
+  std::vector<PartitionEntity> pieces;
 
   void addToPhysical(int dim, int group, int entity);
   NodeIndex node(MshDecoder& in, std::uint64_t tag) const;  // fails for an unknown tag
@@ -29,9 +33,11 @@ struct MshReadState {
 };
 
 void readMsh41Entities(MshDecoder& in, MshReadState& state);
-// The pieces of a partitioned file become the model's entities, in place of those of
-// $Entities.
+// The pieces of a partitioned file; once the file is read, attachPartitions gives their nodes
+// and elements to the entities they are pieces of and keeps the pieces as the mesh's
+// partitions.
 void readMsh41PartitionedEntities(MshDecoder& in, MshReadState& state);
+void attachPartitions(MshReadState& state);
 void readMsh41Nodes(MshDecoder& in, MshReadState& state);
 void readMsh41Elements(MshDecoder& in, MshReadState& state);
 void readMsh22Nodes(MshDecoder& in, MshReadState& state);

@@ -124,7 +124,7 @@ void readMsh(std::istream& in, Model& model, Mesh& mesh, const std::string& name
   model.clear();
   mesh.clear();
   MshDecoder decoder(data, name);
-  MshReadState state{model, mesh, {}, {}, {}};
+  MshReadState state{model, mesh, {}, {}, {}, 0, {}};
   try {
     if (decoder.atEnd()) decoder.fail("not an MSH file: no $MeshFormat");
     const std::string_view first = decoder.line();
@@ -132,6 +132,7 @@ void readMsh(std::istream& in, Model& model, Mesh& mesh, const std::string& name
     const int major = first == "$NOD" ? 1 : readMeshFormat(decoder, first);
     if (major == 1) readSection(decoder, state, major, first);
     while (!decoder.atEnd()) readSection(decoder, state, major, decoder.line());
+    attachPartitions(state);
     buildPhysicalGroups(state);
   } catch (const MshReadError&) {
     model.clear();  // no half-read result

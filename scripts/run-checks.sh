@@ -23,13 +23,16 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/scripts" "$work/msh" "$work/run"
 cp "$root"/tests/golden/scripts/*.geo "$root"/tutorials/*.geo "$work/scripts/"
-# Seed meshes for the reader, in every layout it reads: 4.1 and 2.2, ASCII and binary.
+# Seed meshes for the reader, in every layout it reads: 4.1 and 2.2, ASCII and binary, whole
+# and partitioned.
 for format in msh41 msh22; do
   for bin in "" -bin; do
     "$build/bin/geomesh" "$root/tests/golden/scripts/square.geo" -2 -v 0 -format $format $bin \
       -clscale 4 -o "$work/msh/square-$format$bin.msh"
     "$build/bin/geomesh" "$root/tests/golden/scripts/clscale.geo" -2 -v 0 -format $format $bin \
       -clscale 8 -o "$work/msh/groups-$format$bin.msh"
+    "$build/bin/geomesh" "$root/tests/golden/scripts/square.geo" -2 -v 0 -format $format $bin \
+      -clscale 4 -part 3 -o "$work/msh/parts-$format$bin.msh"
   done
 done
 cd "$work/run"  # scripts may write files (Printf > "file"): keep them here

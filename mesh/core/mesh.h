@@ -104,7 +104,12 @@ class Mesh {
   std::span<const double> nodeSizes() const { return sizes_; }
 
   EntityMesh& entity(EntityId e);  // finds or creates
+  void eraseEntity(EntityId e) { entities_.erase(e); }
   const EntityMesh* find(EntityId e) const;
+  EntityMesh* findMutable(EntityId e) {
+    const auto it = entities_.find(e);
+    return it == entities_.end() ? nullptr : &it->second;
+  }
   const std::map<EntityId, EntityMesh>& entities() const { return entities_; }
   std::size_t elementCount(int dim) const;  // dim -1: all
   void clear();

@@ -58,7 +58,8 @@ ElementBlock walk(const ElementBlock& block, const std::vector<std::size_t>& lin
 }  // namespace
 
 std::vector<ElementBlock> splitIntoChains(const ElementBlock& block,
-                                          const std::function<bool(NodeIndex)>& joins) {
+                                          const std::function<bool(NodeIndex)>& joins,
+                                          bool walkThem) {
   std::vector<std::size_t> parent(block.size());
   std::iota(parent.begin(), parent.end(), 0);
   std::map<NodeIndex, std::size_t> lineAt;  // inner corner -> a line through it
@@ -77,8 +78,35 @@ std::vector<ElementBlock> splitIntoChains(const ElementBlock& block,
     groups[lowest[root]].push_back(l);
   }
   std::vector<ElementBlock> chains;
-  for (const auto& [first, lines] : groups) chains.push_back(walk(block, lines));
+  for (const auto& [first, lines] : groups) {
+    if (walkThem) {
+      chains.push_back(walk(block, lines));
+      continue;
+    }
+    ElementBlock kept{block.type, {}};
+    for (std::size_t l : lines)
+      kept.nodes.insert(kept.nodes.end(), block.element(l).begin(), block.element(l).end());
+    chains.push_back(std::move(kept));
+  }
   return chains;
+}
+
+bool orderAlongCurve(ElementBlock& block, NodeIndex start) {
+  std::map<NodeIndex, std::size_t> leaving;  // first corner -> line
+  for (std::size_t l = 0; l < block.size(); ++l)
+    if (!leaving.emplace(block.element(l)[0], l).second) return false;
+  ElementBlock ordered{block.type, {}};
+  NodeIndex at = start;
+  for (std::size_t k = 0; k < block.size(); ++k) {
+    const auto it = leaving.find(at);
+    if (it == leaving.end()) return false;
+    const auto line = block.element(it->second);
+    ordered.nodes.insert(ordered.nodes.end(), line.begin(), line.end());
+    at = line[1];
+    leaving.erase(it);
+  }
+  block = std::move(ordered);
+  return true;
 }
 
 }  // namespace geomesh

@@ -121,7 +121,10 @@ class PieceAssembler {
   void splitCurve(int self) {
     std::vector<ElementBlock> chains;
     for (const ElementBlock& b : pieces_[self].blocks) {
-      auto split = splitIntoChains(b, [&](NodeIndex n) { return nodePiece_[n] == self; });
+      // Lines of a model curve stay in its order and direction; those made on interfaces are
+      // walked into order.
+      auto split = splitIntoChains(
+          b, [&](NodeIndex n) { return nodePiece_[n] == self; }, pieces_[self].parent.dim != 1);
       std::move(split.begin(), split.end(), std::back_inserter(chains));
     }
     const std::vector<NodeIndex> nodes = std::exchange(pieces_[self].nodes, {});

@@ -229,9 +229,10 @@ TEST_F(ModelCommands, MergeReadsTheOtherMeshFormatsOfTheTable) {
     ScriptRun first;
     runMain(first, std::string(kUnitSquare) +
                        "Mesh 2;\nSave \"square.vtk\";\nSave \"square.stl\";\n"
-                       "Save \"square.ply\";\nSave \"square.off\";\n");
+                       "Save \"square.ply\";\nSave \"square.off\";\nSave \"square.cgns\";\n");
   }
-  for (const char* file : {"square.vtk", "square.stl", "square.ply", "square.off"}) {
+  for (const char* file :
+       {"square.vtk", "square.stl", "square.ply", "square.off", "square.cgns"}) {
     ScriptRun run;
     runMain(run, "Merge \"" + std::string(file) + "\";\n");
     EXPECT_TRUE(run.log.warnings.empty()) << file;

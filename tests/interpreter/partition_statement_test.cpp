@@ -52,6 +52,17 @@ TEST(PartitionStatement, SimplePartitionPluginSlicesAlongX) {
   EXPECT_EQ(partitionsUsed(run.session.mesh()), (std::set<int>{1, 2}));
 }
 
+TEST(PartitionStatement, GhostCellsAndTopologyFilesAreNotWrittenAndSaySo) {
+  ScriptRun run;
+  run.run(std::string(kSquare) +
+          "Mesh.PartitionCreateGhostCells = 1;\nMesh.PartitionTopologyFile = 1;\n"
+          "PartitionMesh 2;\n");
+  ASSERT_EQ(run.log.warnings.size(), 2u);
+  EXPECT_NE(run.log.warnings[0].find("ghost cells"), std::string::npos);
+  EXPECT_NE(run.log.warnings[1].find(".pro"), std::string::npos);
+  EXPECT_NE(run.session.mesh().partitions(), nullptr);
+}
+
 TEST(PartitionStatement, OtherPluginsWarnWhenRun) {
   ScriptRun run;
   run.run("Plugin(CutPlane).A = 1;\nPlugin(CutPlane).Run;\n");

@@ -69,23 +69,32 @@ TEST(MshPartitions, Version41ListsThePiecesAfterTheEntities) {
   EXPECT_EQ(partitionCount, 1);
 }
 
-TEST(MshPartitions, ReadBackThePiecesHoldEveryNodeAndElement) {
+TEST(MshPartitions, ReadingKeepsThePartitionsAndWritingAgainGivesTheSameFile) {
   const Partitioned p = partitionedSquare(4);
   for (bool binary : {false, true}) {
-    std::istringstream in(mshText(p, 4.1, binary, true));
-    Model model;
-    Mesh mesh;
-    readMsh(in, model, mesh, "part.msh");
-    EXPECT_EQ(mesh.nodeCount(), p.mesh.nodeCount());
-    // Saved with SaveAll: the model's elements and those made on the interfaces.
-    std::size_t made = 0;
-    for (const PartitionEntity& piece : p.mesh.partitions()->entities)
-      if (piece.parent.dim != piece.id.dim)
-        for (const ElementBlock& b : piece.blocks) made += b.size();
-    EXPECT_EQ(mesh.elementCount(-1), p.mesh.elementCount(-1) + made);
-    EXPECT_EQ(mesh.elementCount(2), p.mesh.elementCount(2));
-    for (const PartitionEntity& piece : p.mesh.partitions()->entities)
-      EXPECT_TRUE(model.contains(piece.id)) << piece.id.dim << " " << piece.id.tag;
+    const std::string first = mshText(p, 4.1, binary, true);
+    std::istringstream in(first);
+    Partitioned read;
+    readMsh(in, read.model, read.mesh, "part.msh");
+    // The model's entities hold the nodes and elements again; the pieces are partitions.
+    EXPECT_EQ(read.mesh.nodeCount(), p.mesh.nodeCount());
+    for (int d = 0; d <= 2; ++d) EXPECT_EQ(read.mesh.elementCount(d), p.mesh.elementCount(d));
+    ASSERT_NE(read.mesh.partitions(), nullptr);
+    EXPECT_EQ(read.mesh.partitions()->count, 4);
+    const auto& pieces = p.mesh.partitions()->entities;
+    const auto& again = read.mesh.partitions()->entities;
+    ASSERT_EQ(again.size(), pieces.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      EXPECT_EQ(again[i].id, pieces[i].id);
+      EXPECT_EQ(again[i].parent, pieces[i].parent);
+      EXPECT_EQ(again[i].partitions, pieces[i].partitions);
+      EXPECT_EQ(again[i].boundary, pieces[i].boundary);
+      EXPECT_EQ(again[i].nodes.size(), pieces[i].nodes.size());
+    }
+    if (binary) continue;
+    const std::string second = mshText(read, 4.1, false, true);
+    for (const char* name : {"PartitionedEntities", "Nodes", "Elements"})
+      EXPECT_EQ(section(second, name), section(first, name)) << name;
   }
 }
 
@@ -132,6 +141,22 @@ TEST(MshPartitions, SplitFilesHoldOnePartitionEach) {
   }
   EXPECT_EQ(triangles, p.mesh.elementCount(2));
   std::filesystem::remove_all(dir);
+}
+
+TEST(MshPartitions, OtherFormatsSaveTheModelEntitiesAndTheirGroups) {
+  const Partitioned p = partitionedSquare(3);
+  std::ostringstream out;
+  findFormatByName("vtk")->write(out, p.model, p.mesh, {});
+  const std::string text = out.str();
+  std::istringstream cells(text.substr(text.find("CELLS ")));
+  std::string word;
+  std::size_t count = 0;
+  cells >> word >> count;
+  EXPECT_EQ(count, p.mesh.elementCount(2)) << "the triangles of the plate, its only group";
+  std::istringstream ids(text.substr(text.find("LOOKUP_TABLE default")));
+  std::getline(ids, word);
+  int id = 0;
+  while (ids >> id) EXPECT_EQ(id, 1) << "each cell carries the model surface's tag";
 }
 
 }  // namespace
