@@ -1,6 +1,7 @@
 // CGNS (.cgns, HDF5) through libcgns: one base, one unstructured zone, its GridCoordinates, one
 // element section per entity and element type (those of the top dimension first), and per
-// physical group of the dimension below a family and a boundary condition listing its elements.
+// physical group of the cells' dimension or the one below a family and a boundary condition
+// listing its elements.
 #include <cgnslib.h>
 
 #include <algorithm>
@@ -128,15 +129,17 @@ void writeSections(const CgnsZone& z, const MshContent& content, const CgnsPlan&
   }
 }
 
-// Per physical group of the boundary dimension: a family named after it, and a boundary
-// condition of that family listing the group's elements.
+// Per physical group of the cells' dimension or of the boundary's: a family named after it,
+// and a boundary condition of that family listing the group's elements (located at cell
+// centres for groups of cells, as the reference writes them too).
 void writeBoundaries(const CgnsZone& z, const Model& model, const MshContent& content,
                      const CgnsPlan& plan) {
-  const auto location = plan.cellDim == 3   ? CGNS_ENUMV(FaceCenter)
-                        : plan.cellDim == 2 ? CGNS_ENUMV(EdgeCenter)
-                                            : CGNS_ENUMV(Vertex);
+  const auto boundaryLocation = plan.cellDim == 3   ? CGNS_ENUMV(FaceCenter)
+                                : plan.cellDim == 2 ? CGNS_ENUMV(EdgeCenter)
+                                                    : CGNS_ENUMV(Vertex);
   for (const auto& [id, group] : model.physicalGroups()) {
-    if (group.dim != plan.cellDim - 1) continue;
+    if (group.dim != plan.cellDim - 1 && group.dim != plan.cellDim) continue;
+    const auto location = group.dim == plan.cellDim ? CGNS_ENUMV(CellCenter) : boundaryLocation;
     std::vector<cgsize_t> elements;
     for (std::size_t i : groupBlocks(content, group))
       for (std::size_t e = 0; e < content.elementBlocks[i].block->size(); ++e)
@@ -145,6 +148,9 @@ void writeBoundaries(const CgnsZone& z, const Model& model, const MshContent& co
     const std::string name = physicalGroupName(group).substr(0, 32);
     int family = 0, bc = 0;
     check(cg_family_write(z.fn, z.base, name.c_str(), &family), "family");
+    // The group's name inside its family too: where the reference's reader looks for the
+    // names of physical groups.
+    check(cg_family_name_write(z.fn, z.base, family, name.c_str(), name.c_str()), "family name");
     check(cg_boco_write(z.fn, z.base, z.zone, name.c_str(), CGNS_ENUMV(FamilySpecified),
                         CGNS_ENUMV(PointList), static_cast<cgsize_t>(elements.size()),
                         elements.data(), &bc),

@@ -87,16 +87,15 @@ TEST(CgnsReader, A3DMixedMeshReadsBackWithItsTypesNodesAndBoundaryGroups) {
   EXPECT_EQ(back.mesh.nodeCount(), usedNodeCount(mesh));
   EXPECT_EQ(elementsByType(back.mesh), elementsByType(mesh));
   expectPositiveVolumes(back.mesh);
-  // The boundary group keeps its name; the other elements are grouped by section.
+  // The boundary group and the volume groups keep their names; the other elements are
+  // grouped by section.
   using G = std::map<std::pair<int, std::string>, std::size_t>;
   EXPECT_EQ(groupSizes(back), (G{{{0, "Point5_NODE"}, 1},
                                  {{1, "Curve4_BAR_2"}, 2},
                                  {{2, "Surface6_TRI_3"}, 1},
                                  {{2, "wall"}, 3},
-                                 {{3, "Volume1_HEXA_8"}, 1},
-                                 {{3, "Volume2_PENTA_6"}, 1},
-                                 {{3, "Volume2_TETRA_4"}, 1},
-                                 {{3, "Volume7_PYRA_5"}, 1}}));
+                                 {{3, "PhysicalVolume11"}, 3},
+                                 {{3, "solid"}, 1}}));
 }
 
 // The cube's surface, its faces mixed triangles and quadrangles, and two of its edges in the

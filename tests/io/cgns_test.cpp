@@ -83,20 +83,26 @@ TEST(Cgns, WritesOneUnstructuredZoneWithASectionPerEntityAndType) {
                       S{"Curve4_BAR_2", "BAR_2", 8, 9}, S{"Point5_NODE", "NODE", 10, 10}}));
 }
 
-TEST(Cgns, BoundaryGroupsBecomeFamiliesAndBoundaryConditions) {
+TEST(Cgns, BoundaryAndCellGroupsBecomeFamiliesAndBoundaryConditions) {
   Model model;
   Mesh mesh;
   buildMixedMesh(model, mesh);
   MeshWriteOptions all;
   all.saveAll = true;
   const CgnsSummary s = writeAndSummarize(model, mesh, "boundaries.cgns", all);
-  EXPECT_EQ(s.families, (std::vector<std::string>{"wall"}));
-  ASSERT_EQ(s.boundaries.size(), 1u);
+  EXPECT_EQ(s.families, (std::vector<std::string>{"wall", "solid", "PhysicalVolume11"}));
+  ASSERT_EQ(s.boundaries.size(), 3u);
   EXPECT_EQ(s.boundaries[0].name, "wall");
   EXPECT_EQ(s.boundaries[0].family, "wall");
   EXPECT_EQ(s.boundaries[0].location, "FaceCenter");
   // Surface 3's two triangles and quadrangle, not surface 6's triangle.
   EXPECT_EQ(s.boundaries[0].elements, (std::vector<long long>{4, 5, 6}));
+  // Groups of cells are listed too, at cell centres, as the reference writes them.
+  EXPECT_EQ(s.boundaries[1].family, "solid");
+  EXPECT_EQ(s.boundaries[1].location, "CellCenter");
+  EXPECT_EQ(s.boundaries[1].elements.size(), 1u);
+  EXPECT_EQ(s.boundaries[2].family, "PhysicalVolume11");
+  EXPECT_EQ(s.boundaries[2].elements.size(), 2u);  // the prism and the tetrahedron of volume 2
   EXPECT_EQ(sectionOfType(s, "TRI_3").last, 5);
 }
 
