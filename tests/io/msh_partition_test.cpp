@@ -12,6 +12,7 @@
 #include "mesh/partition/partition_mesh.h"
 #include "mesh/pipeline/generate.h"
 #include "tests/mesh/mesh_test_models.h"
+#include "tests/scratch.h"
 
 namespace geomesh {
 namespace {
@@ -123,7 +124,7 @@ TEST(MshPartitions, Version22ElementsCarryTheirPartitions) {
 
 TEST(MshPartitions, SplitFilesHoldOnePartitionEach) {
   const Partitioned p = partitionedSquare(3);
-  const auto dir = std::filesystem::temp_directory_path() / "geomesh_split_test";
+  const auto dir = scratch::path("split-test");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   MeshWriteOptions options;
