@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/msh_content.h"
 #include "kernel/unrolled_geo_hooks.h"
 #include "stdlib/clamped_integer.h"
 
@@ -59,12 +60,9 @@ MeshWriteOptions writeOptions(const OptionRegistry& options) {
 
 std::string unsavedEntities(const Model& model, const Mesh& mesh) {
   static constexpr const char* kKinds[] = {"point", "curve", "surface", "volume"};
-  std::set<EntityId> grouped;
+  const std::set<EntityId> grouped = physicalEntities(model);
   std::set<int> groupedDims;
-  for (const auto& [id, group] : model.physicalGroups()) {
-    groupedDims.insert(id.dim);
-    for (int tag : group.entities) grouped.insert({id.dim, std::abs(tag)});
-  }
+  for (const auto& [id, group] : model.physicalGroups()) groupedDims.insert(id.dim);
   std::vector<std::string> names;
   std::size_t elements = 0;
   for (const auto& [id, em] : mesh.entities()) {

@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-VENV = ROOT / ".venv-bench"
+VENV = ROOT / "bench" / ".venv-bench"
 GEOMESH = ROOT / "build" / "bin" / "geomesh"
 SCRIPTS = ROOT / "bench" / "scripts"
 
@@ -36,13 +36,15 @@ CASES = {
 PREPARED = {"cad_part": ("cad_part_model.geo", "cad_part.step")}
 
 
-def ensure_reference():
+def ensure_reference(modules=("gmsh",)):
+    """The Python of the benchmarks' virtual environment (made on first use), with the
+    reference module and the other `modules` installed. Every bench script shares it."""
     python = VENV / "bin" / "python"
     if not python.exists():
         subprocess.run([sys.executable, "-m", "venv", str(VENV)], check=True)
-    probe = subprocess.run([str(python), "-c", "import gmsh"], capture_output=True)
+    probe = subprocess.run([str(python), "-c", "import " + ", ".join(modules)], capture_output=True)
     if probe.returncode != 0:
-        subprocess.run([str(python), "-m", "pip", "install", "-q", "gmsh"], check=True)
+        subprocess.run([str(python), "-m", "pip", "install", "-q", *modules], check=True)
     return python
 
 

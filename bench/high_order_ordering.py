@@ -23,21 +23,12 @@ import sys
 import tempfile
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import compare  # noqa: E402  (the benchmarks' shared virtual environment)
+
 ROOT = Path(__file__).resolve().parent.parent
-VENV = ROOT / "bench" / ".venv-bench"
 GEOMESH = ROOT / "build" / "bin" / "geomesh"
 IO_TESTS = ROOT / "build" / "bin" / "io_tests"
-
-
-def ensure_reference():
-    """The venv's Python, with the reference module installed (as bench/compare.py does)."""
-    python = VENV / "bin" / "python"
-    if not python.exists():
-        subprocess.run([sys.executable, "-m", "venv", str(VENV)], check=True)
-    probe = subprocess.run([str(python), "-c", "import gmsh, numpy"], capture_output=True)
-    if probe.returncode != 0:
-        subprocess.run([str(python), "-m", "pip", "install", "-q", "gmsh", "numpy"], check=True)
-    return python
 
 
 def reexec_in_venv():
@@ -45,7 +36,7 @@ def reexec_in_venv():
         import gmsh  # noqa: F401
         import numpy  # noqa: F401
     except ImportError:
-        python = ensure_reference()
+        python = compare.ensure_reference(("gmsh", "numpy"))
         os.execv(str(python), [str(python), __file__] + sys.argv[1:])
 
 

@@ -71,8 +71,7 @@ def main():
     parser.add_argument("--parts", type=int, nargs="+", default=[8, 32])
     parser.add_argument("--size", type=float, default=None, help="mesh size (default: the script's)")
     args = parser.parse_args()
-    python = compare.ensure_reference()
-    subprocess.run([str(python), "-m", "pip", "install", "-q", "numpy"], check=True)
+    python = compare.ensure_reference(("gmsh", "numpy"))
     reference = [str(python), "-c", "import sys, gmsh; gmsh.initialize(['gmsh'] + sys.argv[1:], "
                  "run=True); gmsh.finalize()"]
     failed = False

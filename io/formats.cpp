@@ -65,8 +65,8 @@ void writeMsh22(std::ostream& out, const Model& model, const Mesh& mesh,
 // One row per format. Adding a format: its file in io/ defines the writer (and reader), and
 // one row here names them.
 constexpr MeshFormat kFormats[] = {
-    {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh, 4},
-    {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh, 4},
+    {"msh41 msh4 msh", ".msh", 1, 4.0, writeMsh41, readMsh, 4, nullptr, nullptr, true},
+    {"msh22 msh2", ".msh", 1, 0.0, writeMsh22, readMsh, 4, nullptr, nullptr, true},
     {"vtk", ".vtk", 16, 0.0, writeVtk, readVtk, 2},
     {"vtu", ".vtu", 0, 0.0, writeVtu, nullptr, 2},
     {"stl", ".stl", 27, 0.0, writeStl, readStl, 1},
@@ -217,8 +217,7 @@ void writeMeshFile(const std::string& path, const MeshFormat& format, const Mode
     return writeFileAtomicallyByPath(path, [&](const std::string& temporary) {
       format.writeFile(temporary, model, mesh, options);
     });
-  const bool msh = format.write == writeMsh41 || format.write == writeMsh22;
-  if (msh && options.splitPartitions && mesh.partitions()) {
+  if (format.holdsPartitions && options.splitPartitions && mesh.partitions()) {
     const std::filesystem::path whole(path);
     for (int p = 1; p <= mesh.partitions()->count; ++p) {
       std::filesystem::path part = whole;

@@ -57,6 +57,9 @@ struct MeshFormat {
   MeshFileWriter writeFile = nullptr;
   // Set instead of `read` for a format read by a library from a path.
   MeshFileReader readFile = nullptr;
+  // Whether the format holds partitions, so that Mesh.PartitionSplitMeshFiles writes one file
+  // per partition (MeshWriteOptions::onlyPartition) instead of one file.
+  bool holdsPartitions = false;
 
   bool writes() const { return write || writeFile; }
   bool reads() const { return read || readFile; }

@@ -105,11 +105,8 @@ void writeElementRuns(MshEncoder& out, const MshContent& content,
 void writeMsh22Body(MshEncoder& out, const Model& model, const Mesh& mesh,
                     const MshContent& content, const MshWriteOptions& options) {
   writeNodes(out, mesh, content);
-  const bool partitionGroups = content.partitions && !content.partitions->physicalGroups.empty();
-  const bool physicalOnly =
-      !options.saveAll && (!model.physicalGroups().empty() || partitionGroups);
   const std::vector<ElementRun> runs =
-      elementRuns(model, content, physicalOnly, options.partitionOldStyle);
+      elementRuns(model, content, content.physicalOnly, options.partitionOldStyle);
   out.text("$Elements\n" + std::to_string(lineCount(runs, 0, runs.size())) + "\n");
   writeElementRuns(out, content, runs);
   endSection(out, "$EndElements\n");

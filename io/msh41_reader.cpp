@@ -1,6 +1,7 @@
 // MSH 4.1 sections: $Entities, $Nodes and $Elements in per-entity blocks.
 #include <algorithm>
 #include <cstdlib>
+#include <utility>
 
 #include "io/msh_read_state.h"
 #include "mesh/partition/curve_chains.h"
@@ -154,10 +155,9 @@ void attachPartitions(MshReadState& state) {
   MeshPartitions partitions;
   partitions.count = state.partitionCount;
   for (PartitionEntity& piece : state.pieces) {
-    const EntityMesh* held = state.mesh.find(piece.id);
-    if (held) {
-      piece.nodes = held->nodes;
-      piece.blocks = held->blocks;
+    if (EntityMesh* held = state.mesh.findMutable(piece.id)) {
+      piece.nodes = std::move(held->nodes);
+      piece.blocks = std::move(held->blocks);
     }
     EntityMesh& parent = state.mesh.entity(piece.parent);
     parent.nodes.insert(parent.nodes.end(), piece.nodes.begin(), piece.nodes.end());

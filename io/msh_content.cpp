@@ -15,13 +15,6 @@ std::string describe(EntityId e) {
   return std::string(name) + " " + std::to_string(e.tag);
 }
 
-std::set<EntityId> physicalEntities(const Model& model) {
-  std::set<EntityId> out;
-  for (const auto& [id, group] : model.physicalGroups())
-    for (int tag : group.entities) out.insert({id.dim, std::abs(tag)});
-  return out;
-}
-
 std::vector<const ElementBlock*> blocksByType(const std::vector<ElementBlock>& blocks) {
   std::vector<const ElementBlock*> out;
   for (const ElementBlock& b : blocks)
@@ -50,11 +43,19 @@ void checkElementNodesSaved(const MshContent& content, const char* otherwise) {
 
 }  // namespace
 
+std::set<EntityId> physicalEntities(const Model& model) {
+  std::set<EntityId> out;
+  for (const auto& [id, group] : model.physicalGroups())
+    for (int tag : group.entities) out.insert({id.dim, std::abs(tag)});
+  return out;
+}
+
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) {
   MshContent content;
   for (EntityId e : model.entities(-1)) content.entities.insert(e);
   for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
-  const bool physicalOnly = !saveAll && !model.physicalGroups().empty();
+  content.physicalOnly = !saveAll && !model.physicalGroups().empty();
+  const bool physicalOnly = content.physicalOnly;
   const std::set<EntityId> physical = physicalEntities(model);
 
   std::vector<char> used(mesh.nodeCount(), physicalOnly ? 0 : 1);
@@ -97,8 +98,9 @@ MshContent selectPartitionedContent(const Model& model, const Mesh& mesh, bool s
   content.partitions = &partitions;
   for (EntityId e : model.entities(-1)) content.entities.insert(e);
   for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
-  const bool physicalOnly =
+  content.physicalOnly =
       !saveAll && (!model.physicalGroups().empty() || !partitions.physicalGroups.empty());
+  const bool physicalOnly = content.physicalOnly;
   for (const PartitionEntity& piece : partitions.entities) {
     const auto& parts = piece.partitions;
     if (onlyPartition > 0 && std::find(parts.begin(), parts.end(), onlyPartition) == parts.end())

@@ -32,9 +32,13 @@ struct MshContent {
   std::size_t nodeCount = 0;
   std::size_t elementCount = 0;
   std::set<EntityId> entities;                 // of the model and of the mesh
+  bool physicalOnly = false;                   // only the elements of physical groups are saved
   const MeshPartitions* partitions = nullptr;  // set when the file is partitioned
   std::vector<const PartitionEntity*> pieces;  // saved pieces, ordered by (dim, tag)
 };
+
+// The entities that physical groups of the model hold.
+std::set<EntityId> physicalEntities(const Model& model);
 
 // With physical groups and !saveAll, only elements of entities in a physical group are saved;
 // an entity's node block is then written when the entity is in a group or has a node used by a

@@ -20,7 +20,7 @@ TopElements topElements(const Mesh& mesh) {
   for (const auto& [id, em] : mesh.entities())
     for (const ElementBlock& b : em.blocks)
       if (dimension(b.type) == top.dim)
-        for (std::size_t i = 0; i < b.size(); ++i) top.elements.push_back({&em, &b, i});
+        for (std::size_t i = 0; i < b.size(); ++i) top.elements.push_back({&b, i});
   return top;
 }
 

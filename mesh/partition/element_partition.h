@@ -14,7 +14,6 @@ namespace geomesh {
 struct TopElements {
   int dim = -1;
   struct Ref {
-    const EntityMesh* entity;
     const ElementBlock* block;
     std::size_t index;
   };

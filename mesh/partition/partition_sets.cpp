@@ -78,9 +78,9 @@ FacetNodes buildFacetNodes(ElementType type, const std::vector<int>& facet) {
                                     : facet.size() == 2 ? ElementFamily::Line
                                     : facet.size() == 3 ? ElementFamily::Triangle
                                                         : ElementFamily::Quad;
-  const ElementType facetType =
-      facet.size() == 1 ? ElementType::Point1
-                        : *elementTypeOf(facetFamily, order(type), isSerendipity(type));
+  const ElementType facetType = facet.size() == 1
+                                    ? ElementType::Point1
+                                    : *elementTypeOf(facetFamily, order(type), isSerendipity(type));
   const ReferenceElement& element = referenceElement(type);
   std::vector<int> identity(vertexCount(type));
   for (int v = 0; v < vertexCount(type); ++v) identity[v] = v;
@@ -279,8 +279,7 @@ void PartitionSetIndex::makeInterfaceElements(int topDim) {
       }
     };
     forEachModelElement([&](EntityId e, const ElementBlock& b, std::size_t i, int set) {
-      if (e.dim == d && dimension(b.type) == d)
-        addCell(e, b.type, b.element(i).data(), set);
+      if (e.dim == d && dimension(b.type) == d) addCell(e, b.type, b.element(i).data(), set);
     });
     for (const InterfaceElement& f : interfaces)
       if (f.dim == d) addCell(f.parent, f.type, f.nodes.data(), f.set);
@@ -291,8 +290,8 @@ void PartitionSetIndex::makeInterfaceElements(int topDim) {
       std::sort(made.begin(), made.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
       for (auto& [key, sides] : made)
-        interfaces.push_back({d - 1, parent, sets.intern(std::move(sides->partitions)),
-                              sides->type, std::move(sides->nodes)});
+        interfaces.push_back({d - 1, parent, sets.intern(std::move(sides->partitions)), sides->type,
+                              std::move(sides->nodes)});
     }
   }
 }

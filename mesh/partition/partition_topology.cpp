@@ -148,14 +148,14 @@ class PieceAssembler {
       pieces_[target].nodes = std::move(inner);
       pieces_[target].blocks.push_back(std::move(chains[c]));
     }
-    // Nodes of the first chain were marked with `self` too: the others are on no line.
-    std::vector<char> onChain(nodes.size(), 0);
+    // Nodes still marked `self` but not in the first chain are on no line: they become points
+    // (collected first, as making points grows pieces_).
     const std::vector<NodeIndex>& first = pieces_[self].nodes;
-    for (std::size_t k = 0; k < nodes.size(); ++k)
-      onChain[k] =
-          nodePiece_[nodes[k]] != self || std::binary_search(first.begin(), first.end(), nodes[k]);
-    for (std::size_t k = 0; k < nodes.size(); ++k)
-      if (!onChain[k]) makePoint(nodes[k]);
+    std::vector<NodeIndex> lost;
+    for (NodeIndex n : nodes)
+      if (nodePiece_[n] == self && !std::binary_search(first.begin(), first.end(), n))
+        lost.push_back(n);
+    for (NodeIndex n : lost) makePoint(n);
   }
 
   void makePoint(NodeIndex n) {
