@@ -87,10 +87,19 @@ std::optional<double> recombinationAngle(const Model& model, const MeshOptions& 
   return std::nullopt;
 }
 
-// Edges of the curves embedded in a surface, which recombination must keep.
+// Edges recombination must keep: those of the curves embedded in a surface, and of its seams
+// (a curve its loops use twice, once from each side: a periodic surface's seam, whose two
+// sides are one edge in space but far apart in the parameter plane).
 std::vector<std::uint64_t> embeddedEdges(const ModelSurface& surface, const Mesh& mesh) {
+  std::vector<int> curves = surface.embeddedCurves;
+  std::vector<int> bounding;
+  for (const std::vector<int>& loop : surface.loops)
+    for (int c : loop) bounding.push_back(std::abs(c));
+  std::sort(bounding.begin(), bounding.end());
+  for (std::size_t k = 1; k < bounding.size(); ++k)
+    if (bounding[k] == bounding[k - 1]) curves.push_back(bounding[k]);
   std::vector<std::uint64_t> keys;
-  for (int curve : surface.embeddedCurves)
+  for (int curve : curves)
     if (const EntityMesh* em = mesh.find({1, std::abs(curve)}))
       if (const ElementBlock* lines = em->findBlock(ElementType::Line2))
         for (std::size_t e = 0; e < lines->size(); ++e)

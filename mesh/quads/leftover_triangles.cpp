@@ -146,10 +146,11 @@ std::vector<std::array<NodeIndex, 4>> splitFace(NodePlan& plan,
   return {{at(0), at(1), o, at(5)}, {at(1), at(2), at(3), o}, {o, at(3), at(4), at(5)}};
 }
 
-// Whether the quadrangle is strictly convex on the surface, turning along `normal`.
+// Whether the quadrangle is convex on the surface, turning along `normal`, with no corner
+// nearly straight.
 bool isConvex(const NodePlan& plan, const std::array<NodeIndex, 4>& q, Vec3 normal) {
   return quadAngleQuality(plan.position(q[0]), plan.position(q[1]), plan.position(q[2]),
-                          plan.position(q[3]), normal) > 0;
+                          plan.position(q[3]), normal) > kMinQuadQuality;
 }
 
 // The polygon of faces a and b, which share one side: a's corners from the end of that side
@@ -182,7 +183,8 @@ void insertMiddles(const std::unordered_map<std::uint64_t, NodeIndex>& middleOf,
 
 // A hexagon split into quadrangles: two, along a diagonal (through its middle node if it has
 // one), or three around a new centre node joined to every other corner; the best of these by
-// the worst corner angle. nullopt when none gives convex quadrangles.
+// the worst corner angle. nullopt when none gives convex quadrangles with no corner nearly
+// straight.
 std::optional<std::vector<std::array<NodeIndex, 4>>> cutHexagon(
     NodePlan& plan, const std::vector<NodeIndex>& h, const std::vector<bool>& middle,
     Vec3 normal) {
@@ -191,7 +193,7 @@ std::optional<std::vector<std::array<NodeIndex, 4>>> cutHexagon(
                             plan.position(q[3]), normal);
   };
   std::optional<std::vector<std::array<NodeIndex, 4>>> best;
-  double bestQuality = 0;
+  double bestQuality = kMinQuadQuality;
   auto consider = [&](std::vector<std::array<NodeIndex, 4>> quads) {
     double worst = 1;
     for (const auto& q : quads) worst = std::min(worst, quality(q));
@@ -316,7 +318,7 @@ std::size_t collapseDiamonds(const SurfaceGeometry& g, const Mesh& mesh, EntityM
     const Vec3 c = mesh.node(o);
     const SurfaceDerivatives d = g.firstDerivatives(g.project(c));
     if (!(quadAngleQuality(mesh.node(q[0]), mesh.node(q[1]), mesh.node(q[2]), mesh.node(q[3]),
-                           orientation * cross(d.du, d.dv)) > 0))
+                           orientation * cross(d.du, d.dv)) > kMinQuadQuality))
       continue;
     for (std::uint32_t t : it->second) gone[t] = 1;
     quads.insert(quads.end(), q.begin(), q.end());

@@ -129,11 +129,11 @@ std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngle
     if (b.type == ElementType::Triangle3) block = &b;
   if (!block || block->size() < 2) return 0;
   const bool blossom = algorithm == RecombinationAlgorithm::Blossom;
-  // Blossom takes every convex pair (it favours the count of quadrangles), greedy only those
-  // within the angle bound.
-  constexpr double kConvex = 1e-9;
+  // Blossom takes every convex pair with no corner nearly straight (it favours the count of
+  // quadrangles), greedy only those within the angle bound.
   const double minQuality =
-      blossom ? kConvex : 1 - std::clamp(maxAngleDeviation, 0.0, 90.0) / 90;
+      blossom ? kMinQuadQuality
+              : std::max(kMinQuadQuality, 1 - std::clamp(maxAngleDeviation, 0.0, 90.0) / 90);
   const std::vector<Candidate> ranked = candidates(mesh, *block, minQuality, keptEdges);
   // Both complete the greedy pairs by augmenting paths; Simple keeps to the angle bound.
   const std::vector<std::uint8_t> chosen = blossomChoice(ranked, block->size());

@@ -46,6 +46,11 @@ inline std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
 // rectangle; -1 when it is not strictly convex with respect to `normal`.
 double quadAngleQuality(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 normal);
 
+// The least angle quality of a quadrangle recombination makes: no corner above 175 degrees. A
+// corner of nearly 180 degrees is convex by a hair on a curved surface (near a pole, along a
+// seam) and flat or inverted once the quadrangle is cut along its other diagonal.
+inline constexpr double kMinQuadQuality = 5.0 / 90;
+
 // Laplacian smoothing of the surface's own nodes over its triangles and quadrangles: each
 // node moves towards the mean of its neighbours, then back onto the surface (its parameters
 // updated); a move is kept only when the elements around the node stay valid (triangles not
