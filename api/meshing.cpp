@@ -1,6 +1,7 @@
 // Meshing with failures located in the script.
 #include "api/meshing.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -38,6 +39,25 @@ bool hasEntityUpTo(const Model& model, int dim) {
   return false;
 }
 
+// The statement that defined the entity; for an entity made as part of a larger one (a face
+// of a Sphere, of a merged STEP part, of a Boolean's result), that of the first entity above
+// it that a statement defined.
+std::optional<SourceLocation> originOf(const Session& session, EntityId entity) {
+  std::vector<EntityId> level{entity};
+  while (!level.empty()) {
+    for (const EntityId& e : level)
+      if (auto where = session.origin(e)) return where;
+    std::vector<EntityId> above;
+    for (const EntityId& e : level)
+      if (e.dim < 3)
+        for (int tag : session.model().upward(e)) above.push_back({e.dim + 1, tag});
+    std::sort(above.begin(), above.end());
+    above.erase(std::unique(above.begin(), above.end()), above.end());
+    level = std::move(above);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void generate(Session& session, int dim) {
@@ -45,7 +65,7 @@ void generate(Session& session, int dim) {
     session.generate(dim);
   } catch (const MeshError& error) {
     // Point at the statement that defined the entity, when the script did.
-    if (auto where = session.origin(error.entity)) failAt(*where, error.what());
+    if (auto where = originOf(session, error.entity)) failAt(*where, error.what());
     throw;
   }
 }
@@ -61,7 +81,7 @@ void setOrder(Session& session, int order) {
     raiseOrder(session.model(), options, session.mesh(), session.log());
     if (partitionCount > 0) partitionMesh(session, partitionCount);
   } catch (const MeshError& error) {
-    if (auto where = session.origin(error.entity)) failAt(*where, error.what());
+    if (auto where = originOf(session, error.entity)) failAt(*where, error.what());
     throw;
   }
 }

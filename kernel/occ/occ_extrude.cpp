@@ -3,6 +3,7 @@
 #include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepSweep_Revol.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -39,8 +40,20 @@ struct Sweep {
   }
   TopoDS_Shape generated(const TopoDS_Shape& s) {
     const TopTools_ListOfShape& list = prism ? prism->Generated(s) : revolution->Generated(s);
-    return list.IsEmpty() ? TopoDS_Shape() : list.First();
+    if (!list.IsEmpty()) return list.First();
+    if (!revolution) return {};
+    // A whole turn leaves OpenCASCADE's history empty; the sweep itself still knows what each
+    // input made, which counts when the result holds it (an edge on the axis makes nothing).
+    const TopoDS_Shape made = const_cast<BRepSweep_Revol&>(revolution->Revol()).Shape(s);
+    if (made.IsNull()) return {};
+    if (resultParts.IsEmpty())
+      for (TopAbs_ShapeEnum type : {TopAbs_EDGE, TopAbs_FACE, TopAbs_SOLID})
+        TopExp::MapShapes(result(), type, resultParts);
+    return resultParts.Contains(made) ? made : TopoDS_Shape();
   }
+
+ private:
+  TopTools_IndexedMapOfShape resultParts;  // filled on first need
 };
 
 void requireSweepable(const ExtrusionMotion& motion) {

@@ -67,6 +67,24 @@ TEST(OccExtrude, RevolvedSurfaces) {
   EXPECT_THROW(occ.extrude({{3, 1}}, ExtrusionMotion::translate({0, 0, 1}), {}), GeometryError);
 }
 
+// A whole turn: OpenCASCADE keeps no history for it, yet the list is the reference's: the
+// profile (its own far face), the volume, then one face per curve off the axis.
+TEST(OccExtrude, WholeTurns) {
+  OccFactory occ;
+  occ.addRectangle(1, {1, 0, 0}, 1, 1);  // in the xy plane, off the y axis
+  const auto turn = ExtrusionMotion::rotate({0, 1, 0}, {0, 0, 0}, 2 * std::numbers::pi);
+  std::vector<EntityId> r = occ.extrude({{2, 1}}, turn, {});
+  EXPECT_EQ(r, (std::vector<EntityId>{{2, 1}, {3, 1}, {2, 2}, {2, 3}, {2, 4}, {2, 5}}));
+  EXPECT_NEAR(occ.volume(1), std::numbers::pi * (4 - 1), 1e-9);
+  // A profile with a side on the axis: that side sweeps nothing.
+  occ.addRectangle(10, {0, 5, 0}, 1, 1);
+  r = occ.extrude({{2, 10}}, turn, {});
+  ASSERT_EQ(r.size(), 5u);
+  EXPECT_EQ(r[0], (EntityId{2, 10}));
+  EXPECT_EQ(r[1].dim, 3);
+  EXPECT_NEAR(occ.volume(r[1].tag), std::numbers::pi, 1e-9);
+}
+
 // Extrude Using Wire: a disk swept along a straight wire is a cylinder; the result is the
 // volume alone, as the reference returns it.
 TEST(OccExtrude, AlongAWire) {
