@@ -22,11 +22,29 @@ Session::~Session() = default;
 void Session::synchronize() {
   if (!meshFromFile_) {
     factories_.synchronize(model_);
+    warnOfSkippedMembers();
     return;
   }
   if (hasGeometry())
     throw std::runtime_error(
         "the script defines geometry besides a merged mesh file: mixing both is not supported yet");
+}
+
+// As the reference does, a physical group keeps the members the model has and skips the
+// others with a warning: a tag the script got wrong, or an entity a Boolean renumbered. Each
+// is told of once, however often the model is synchronized.
+void Session::warnOfSkippedMembers() {
+  static const char* const kKinds[] = {"point", "curve", "surface", "volume"};
+  for (const auto& [id, group] : factories_.current().physicalGroups()) {
+    if (id.dim < 0 || id.dim > 3) continue;
+    for (int member : group.entities) {
+      const int tag = std::abs(member);
+      if (model_.contains({id.dim, tag}) || !skippedMembers_.insert({id.dim, id.tag, tag}).second)
+        continue;
+      log_.warning(std::string("Skipping unknown ") + kKinds[id.dim] + " " + std::to_string(tag) +
+                   " in physical " + kKinds[id.dim] + " " + std::to_string(id.tag));
+    }
+  }
 }
 
 bool Session::hasGeometry() const {

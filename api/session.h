@@ -106,6 +106,9 @@ class Session {
   bool systemCallsAllowed_ = false;
   bool sandboxed_ = false;
   bool meshFromFile_ = false;
+  // Physical group members the model lacked at a synchronization: (dim, group, member).
+  std::set<std::tuple<int, int, int>> skippedMembers_;
+  void warnOfSkippedMembers();
 };
 
 }  // namespace geomesh

@@ -321,8 +321,10 @@ part:
 | block_part { $$ = std::move($1); }
 ;
 block_part: '{' block '}' { $$ = std::move($2); } ;
+// After the first block, `{}` is an empty block: BooleanFragments(1) = { Volume{1:3}; }{};
 block_parts: block_part { $$.push_back(std::move($1)); }
-           | block_parts block_part { $$ = std::move($1); $$.push_back(std::move($2)); } ;
+           | block_parts block_part { $$ = std::move($1); $$.push_back(std::move($2)); }
+           | block_parts '{' '}' { $$ = std::move($1); $$.emplace_back(); } ;
 
 // The data of a post-processing view: SP(x,y,z){v}; T2(x,y,0){"text"}; TIME{0,1}; ...
 view_items: %empty | view_items view_item ;

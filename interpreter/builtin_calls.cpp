@@ -36,12 +36,7 @@ Value Interpreter::callFunction(const ast::Expr& call) {
     const Value& list = it->second;
     if (call.args.empty())
       return list.isText() ? Value::stringList(list.strings()) : Value::list(list.numbers());
-    const double index = evaluateNumber(*call.args[0]);
-    if (index < 0 || clampedInteger<std::size_t>(index) >= list.size())
-      fail(call.args[0]->loc, "index " + std::to_string(clampedInteger<long long>(index)) +
-                                  " out of range for '" + name + "'");
-    const auto at = clampedInteger<std::size_t>(index);
-    return list.isText() ? Value::string(list.strings()[at]) : Value::number(list.numbers()[at]);
+    return itemsAt(name, call.loc, *call.args[0]);
   }
   fail(call.loc, "unknown function '" + name + "'" + didYouMean(name, functions_.names()));
 }

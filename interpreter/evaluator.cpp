@@ -111,20 +111,24 @@ Value Interpreter::variableValue(const Expr& expr) {
 }
 
 Value Interpreter::elementValue(const Expr& expr) {
-  const std::string name = resolveName(expr.name);
-  const Value index = evaluate(*expr.args[0]);
+  return itemsAt(resolveName(expr.name), expr.loc, *expr.args[0]);
+}
+
+// a[i] or a(i): one item; a[{i, j}] or a({i:j}): the list of those items, in that order.
+Value Interpreter::itemsAt(const std::string& name, const SourceLocation& where,
+                           const Expr& indexExpr) {
+  const Value index = evaluate(indexExpr);
   // A reference, not a copy: reading one item of a long list stays cheap. Evaluating the
   // index above cannot change variables, and map references survive insertions anyway.
-  const Value& list = requireVariable(name, expr.loc);
-  if (!index.isNumeric()) fail(expr.args[0]->loc, "an index must be a number");
+  const Value& list = requireVariable(name, where);
+  if (!index.isNumeric()) fail(indexExpr.loc, "an index must be a number");
   std::vector<double> numbers;
   std::vector<std::string> strings;
   for (double i : index.numbers()) {
     if (i < 0 || clampedInteger<std::size_t>(i) >= list.size())
-      fail(expr.args[0]->loc, "index " + std::to_string(clampedInteger<long long>(i)) +
-                                  " out of range for '" + name + "' (" +
-                                  std::to_string(list.size()) + " item" +
-                                  (list.size() == 1 ? "" : "s") + ")");
+      fail(indexExpr.loc, "index " + std::to_string(clampedInteger<long long>(i)) +
+                              " out of range for '" + name + "' (" + std::to_string(list.size()) +
+                              " item" + (list.size() == 1 ? "" : "s") + ")");
     const auto at = clampedInteger<std::size_t>(i);
     if (list.isText())
       strings.push_back(list.strings()[at]);

@@ -207,7 +207,10 @@ std::vector<EntityId> Interpreter::booleanArguments(const ast::ShapePart& block,
 std::vector<EntityId> Interpreter::booleanShapes(const std::string& word,
                                                  const std::vector<ast::ShapePart>& parts,
                                                  int tag, const SourceLocation& where) {
-  if (parts.size() != 2 || !parts[0].isBlock || !parts[1].isBlock)
+  // `{}` parses as an empty list, not a block; it stands for a block with no shapes, as in
+  // BooleanFragments{ Volume{1:3}; Delete; }{}, the usual way to glue many volumes.
+  auto isBlock = [](const ast::ShapePart& part) { return part.isBlock || part.items.empty(); };
+  if (parts.size() != 2 || !isBlock(parts[0]) || !isBlock(parts[1]))
     fail(where, word + " takes two blocks of shapes, as in " + word +
                     "{ Volume{1}; Delete; }{ Volume{2}; Delete; }");
   bool deleteObjects = false, deleteTools = false;
@@ -215,6 +218,18 @@ std::vector<EntityId> Interpreter::booleanShapes(const std::string& word,
   const std::vector<EntityId> tools = booleanArguments(parts[1], deleteTools);
   SolidModeling* solids = solidModeling(word, where);
   if (!solids) return {};
+  // The reference does nothing, deletes nothing and gives an empty list when there is no
+  // object, and likewise for fragments of fewer than two shapes; without a tool, the other
+  // operations fail (in the kernel, below).
+  if (objects.empty()) {
+    warn(where, word + " has no object to operate on: nothing done");
+    return {};
+  }
+  if (booleanOperation(word) == SolidModeling::BooleanOperation::Fragments &&
+      objects.size() + tools.size() < 2) {
+    warn(where, word + " of a single shape: nothing done");
+    return {};
+  }
   for (const std::vector<EntityId>* list : {&objects, &tools})
     for (const EntityId& e : *list)
       if (!solids->owns(e) && session_.factory().contains({e.dim, std::abs(e.tag)}))

@@ -78,6 +78,7 @@ class Interpreter {
   Value variableValue(const ast::Expr& expr);
   Value& requireVariable(const std::string& name, const SourceLocation& where);
   Value elementValue(const ast::Expr& expr);
+  Value itemsAt(const std::string& name, const SourceLocation& where, const ast::Expr& indexExpr);
   Value listValue(const ast::ExprList& items, const SourceLocation& where);
   std::vector<double> rangeValues(const ast::Expr& range);
   Value unaryValue(const ast::Expr& expr);

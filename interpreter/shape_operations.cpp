@@ -140,7 +140,12 @@ std::vector<EntityId> Interpreter::extrude(const ast::Expr& shape) {
     fail(shape.loc, "Extrude takes {dx, dy, dz}, {{axis}, {point}, angle} or "
                     "{{dx, dy, dz}, {axis}, {point}, angle}");
   const ast::ShapePart& block = shape.parts.back();
-  return session_.factory().extrude(shapesIn(block), motion, extrusionLayers(block));
+  std::vector<EntityId> made =
+      session_.factory().extrude(shapesIn(block), motion, extrusionLayers(block));
+  // What the sweep made points at it when it cannot be meshed; its inputs keep their own.
+  for (const EntityId& e : made)
+    if (!session_.origin(e)) session_.recordOrigin(e, shape.loc);
+  return made;
 }
 
 // Operations that produce shapes; nullopt when `shape` is none of them.

@@ -10,15 +10,18 @@
 #include <Geom_Circle.hxx>
 #include <Geom_Ellipse.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <Precision.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
+#include <TopExp.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -86,13 +89,21 @@ void OccFactory::addCircleArc(int tag, int startPoint, int centerPoint, int endP
   Vec3 normal = cross(u, v);
   const double radius = norm(u);
   if (!(radius > 0)) throw GeometryError(what + ": its start point is its center");
-  // A half circle: in the plane z = constant, turning counter-clockwise (else about y).
-  if (!(norm(normal) > 1e-12 * radius * radius))
-    normal = std::abs(u.z) < 1e-12 * radius ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
+  // As in the reference, only ends exactly opposite (a cross product that vanishes, not one
+  // that is merely small, as Sin(Pi) leaves it) make a half circle of undefined plane. The
+  // reference draws it in the plane z = constant of its center, clockwise seen from +z, and
+  // fails when its ends are not in that plane.
+  if (!(norm(normal) > std::numeric_limits<double>::min())) {
+    if (std::abs(u.z) > Precision::Confusion())
+      throw GeometryError(what +
+                          ": its ends are opposite on a diameter that leaves the plane "
+                          "z = constant of its center, so its plane is undefined");
+    normal = {0, 0, -1};
+  }
   const TopoDS_Shape edge = guarded(what, [&] {
     const gp_Ax2 axis(toPnt(c), gp_Dir(normal.x, normal.y, normal.z), gp_Dir(u.x, u.y, u.z));
     Handle(Geom_Circle) circle = new Geom_Circle(axis, radius);
-    const double angle = std::atan2(dot(cross(u, v), normalized(normal)), dot(u, v));
+    const double angle = std::atan2(norm(cross(u, v)), dot(u, v));  // pi for a half circle
     Handle(Geom_TrimmedCurve) arc = new Geom_TrimmedCurve(circle, 0, angle);
     return edgeBetween(arc, a, b, what);
   });
@@ -223,7 +234,8 @@ Handle(Geom_BSplineCurve) clampedBSpline(const TColgp_Array1OfPnt& p, int degree
   return new Geom_BSplineCurve(p, k, m, degree);
 }
 
-// Uniform periodic knots over the distinct poles (the last one repeats the first).
+// Uniform periodic knots over the distinct poles (the last one repeats the first): at
+// parameter 0 the curve is near its second pole, not at its first.
 Handle(Geom_BSplineCurve) periodicBSpline(const TColgp_Array1OfPnt& all, int degree) {
   TColgp_Array1OfPnt p(1, all.Length() - 1);
   for (int i = 1; i < all.Length(); ++i) p.SetValue(i, all.Value(i));
@@ -263,22 +275,33 @@ void OccFactory::addBSpline(int tag, const std::vector<int>& points) {
   tag = primitiveTag(1, tag, "BSpline");
   const std::string what = "BSpline " + std::to_string(tag);
   requireCount(points, 2, what);
-  const bool closed = points.front() == points.back() && points.size() > 3;
+  // A closed control polygon (its first point repeated last) makes a periodic curve, as in the
+  // reference. That curve does not pass through its points: it gets a vertex of its own where
+  // its parameter starts (the next free point tag), and the repeated point stays apart.
+  const bool closed = points.front() == points.back() && points.size() > 2;
   const TopoDS_Vertex a = vertexOf(*shapes_, points.front()), b = vertexOf(*shapes_, points.back());
   const TopoDS_Shape edge = guarded(what, [&] {
     const TColgp_Array1OfPnt p = poles(*this, points);
-    const int degree = std::min(3, closed ? p.Length() - 2 : p.Length() - 1);
-    Handle(Geom_BSplineCurve) curve =
-        closed ? periodicBSpline(p, degree) : clampedBSpline(p, degree);
-    return edgeBetween(curve, a, b, what);
+    const int degree = std::min(3, p.Length() - 1);
+    if (closed) return TopoDS_Edge(BRepBuilderAPI_MakeEdge(periodicBSpline(p, degree)).Edge());
+    return edgeBetween(clampedBSpline(p, degree), a, b, what);
   });
   shapes_->bindTree(1, tag, edge);
+  // The reference gives the curve's own vertex the mesh size the repeated point has now.
+  const auto size = meshSizes_.find(points.front());
+  if (closed && size != meshSizes_.end())
+    meshSizes_[shapes_->tagOf(0, TopExp::FirstVertex(TopoDS::Edge(edge)))] = size->second;
 }
 
 void OccFactory::addBezier(int tag, const std::vector<int>& points) {
   tag = primitiveTag(1, tag, "Bezier");
   const std::string what = "Bezier " + std::to_string(tag);
   requireCount(points, 2, what);
+  // Refused as the reference refuses it, so that a script that relies on one fails here too.
+  if (points.front() == points.back())
+    throw GeometryError(what +
+                        " starts and ends at the same point; closed Bezier curves are "
+                        "not supported");
   const TopoDS_Vertex a = vertexOf(*shapes_, points.front()), b = vertexOf(*shapes_, points.back());
   const TopoDS_Shape edge = guarded(what, [&] {
     Handle(Geom_BezierCurve) curve = new Geom_BezierCurve(poles(*this, points));

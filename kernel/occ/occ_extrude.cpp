@@ -5,19 +5,24 @@
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepSweep_Revol.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax1.hxx>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_factory.h"
@@ -99,6 +104,47 @@ std::vector<TopoDS_Shape> lateralSources(const OccShapes& shapes, EntityId e) {
   return out;
 }
 
+// A vertex the sweep made, not bound yet, and the input vertex it comes from (for a pipe: the
+// one at its place), or null.
+using MadeVertex = std::pair<TopoDS_Shape, TopoDS_Shape>;
+
+// The vertices of `shape` not bound yet, each once.
+std::vector<TopoDS_Shape> unboundVertices(const OccShapes& shapes, const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(shape, TopAbs_VERTEX, vertices);
+  std::vector<TopoDS_Shape> out;
+  for (int i = 1; i <= vertices.Extent(); ++i)
+    if (!shapes.isBound(0, vertices(i))) out.push_back(vertices(i));
+  return out;
+}
+
+// Once the made vertices are bound: each takes the mesh size of the vertex it comes from, and
+// has none when that one has none (a size left under a reused tag by a removed point goes).
+void copyMeshSizes(const OccShapes& shapes, const std::vector<MadeVertex>& made,
+                   std::map<int, double>& sizes) {
+  for (const auto& [vertex, source] : made) {
+    if (!shapes.isBound(0, vertex)) continue;
+    const int tag = shapes.tagOf(0, vertex);
+    const auto size = source.IsNull() ? sizes.end() : sizes.find(shapes.tagOf(0, source));
+    if (size != sizes.end())
+      sizes[tag] = size->second;
+    else
+      sizes.erase(tag);
+  }
+}
+
+// The input vertex at the place of `vertex` (to their tolerances), or null.
+TopoDS_Shape coincidentVertex(const TopoDS_Vertex& vertex, const TopoDS_Shape& inputs) {
+  const gp_Pnt at = BRep_Tool::Pnt(vertex);
+  for (TopExp_Explorer it(inputs, TopAbs_VERTEX); it.More(); it.Next()) {
+    const TopoDS_Vertex input = TopoDS::Vertex(it.Current());
+    if (at.Distance(BRep_Tool::Pnt(input)) <=
+        BRep_Tool::Tolerance(vertex) + BRep_Tool::Tolerance(input))
+      return input;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::vector<EntityId> OccFactory::extrude(const std::vector<EntityId>& shapes,
@@ -115,11 +161,19 @@ std::vector<EntityId> OccFactory::extrude(const std::vector<EntityId>& shapes,
   }
   Sweep s = guarded("Extrude", [&] { return sweep(inputs, motion); });
   const TopoDS_Shape result = guarded("Extrude", [&] { return s.result(); });
+  // As in the reference, each point the sweep makes has the mesh size of the point it was
+  // swept from (a point on the axis of a rotation makes none).
+  std::vector<MadeVertex> made;
+  for (TopExp_Explorer it(inputs, TopAbs_VERTEX); it.More(); it.Next()) {
+    const TopoDS_Shape top = guarded("Extrude", [&] { return s.top(it.Current()); });
+    if (!top.IsNull() && !shapes_->isBound(0, top)) made.push_back({top, it.Current()});
+  }
   // New entities are numbered as the result holds them, highest dimension first.
   for (int dim = 3; dim >= 1; --dim)
     for (TopExp_Explorer it(result, kTypes[dim], dim < 3 ? kTypes[dim + 1] : TopAbs_SHAPE);
          it.More(); it.Next())
       shapes_->bindNew(dim, it.Current());
+  copyMeshSizes(*shapes_, made, meshSizes_);
   auto tagOf = [&](int dim, const TopoDS_Shape& shape) {
     return shape.IsNull() ? 0 : shapes_->bindNew(dim, shape);
   };
@@ -171,6 +225,11 @@ std::vector<EntityId> OccFactory::extrudeAlongWire(const std::vector<EntityId>& 
       throw GeometryError("Extrude Using Wire: OpenCASCADE could not sweep the shapes");
     return pipe.Shape();
   });
+  // The reference gives a point the mesh size of a point at the same place: here, the copies
+  // of the inputs' points at the start of the sweep have their sizes, the others none.
+  std::vector<MadeVertex> made;
+  for (const TopoDS_Shape& vertex : unboundVertices(*shapes_, result))
+    made.push_back({vertex, coincidentVertex(TopoDS::Vertex(vertex), inputs)});
   // What the inputs made, the lowest dimension first as in the reference: a point's curve,
   // a curve's surface, a surface's volume.
   std::vector<EntityId> out;
@@ -182,6 +241,7 @@ std::vector<EntityId> OccFactory::extrudeAlongWire(const std::vector<EntityId>& 
       if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
     }
   }
+  copyMeshSizes(*shapes_, made, meshSizes_);
   return out;
 }
 

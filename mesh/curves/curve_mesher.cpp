@@ -75,11 +75,12 @@ class SizeIntegral {
     for (int k = 0; k <= 2 * kCells; ++k) sigma[k] = length * k / (2 * kCells);
     return sigma;
   }
-  // `fieldSizes`: empty, or bounds on the size (sampleSizeBounds) at fieldSampleArcLengths.
+  // `fieldSizes`: empty, or bounds on the size (sampleSizeBounds) at fieldSampleArcLengths;
+  // `bendSizes` likewise, bounds that hold even below Mesh.MeshSizeMin.
   SizeIntegral(double length, double startSize, double endSize, const SizeRules& rules,
-               std::vector<double> fieldSizes = {})
+               std::vector<double> fieldSizes = {}, std::vector<double> bendSizes = {})
       : length_(length), h0_(startSize), h1_(endSize), rules_(rules),
-        field_(std::move(fieldSizes)) {
+        field_(std::move(fieldSizes)), bend_(std::move(bendSizes)) {
     const double dx = length / kCells;
     cumulative_.push_back(0);
     for (int k = 0; k < kCells; ++k) {
@@ -92,7 +93,8 @@ class SizeIntegral {
   double size(double sigma) const {
     const double f = length_ > 0 ? sigma / length_ : 0;
     // Exact at both ends, even for 1e22.
-    return rules_.finish(std::min((1 - f) * h0_ + f * h1_, fieldSize(f)));
+    return std::min(rules_.finish(std::min((1 - f) * h0_ + f * h1_, sampled(field_, f))),
+                    sampled(bend_, f));
   }
   // The arc length where the integral reaches `value`.
   double arcLengthAt(double value) const {
@@ -104,20 +106,85 @@ class SizeIntegral {
   }
 
  private:
-  // The background field at fraction f of the length, interpolated between samples.
-  double fieldSize(double f) const {
-    if (field_.empty()) return 1e22;
-    const double x = std::clamp(f, 0.0, 1.0) * (field_.size() - 1);
-    const std::size_t k = std::min(static_cast<std::size_t>(x), field_.size() - 2);
+  // Samples of a bound at fraction f of the length, interpolated.
+  static double sampled(const std::vector<double>& samples, double f) {
+    if (samples.empty()) return 1e22;
+    const double x = std::clamp(f, 0.0, 1.0) * (samples.size() - 1);
+    const std::size_t k = std::min(static_cast<std::size_t>(x), samples.size() - 2);
     const double w = x - static_cast<double>(k);
-    return (1 - w) * field_[k] + w * field_[k + 1];
+    return (1 - w) * samples[k] + w * samples[k + 1];
   }
 
   double length_, h0_, h1_;
   const SizeRules& rules_;
-  std::vector<double> field_;
+  std::vector<double> field_, bend_;
   std::vector<double> cumulative_;
 };
+
+// The curved surfaces the curve bounds whose bends the sizes along it (up to `largest`) could
+// outgrow (see bendSize), judged on a few places along the curve.
+std::vector<const SurfaceGeometry*> tightlyBentSurfaces(const Model& model,
+                                                        const ModelCurve& curve, double largest) {
+  std::vector<const SurfaceGeometry*> bent;
+  const Interval range = curve.geometry->range();
+  constexpr int kPlaces = 32;
+  for (int tag : model.upward({1, curve.tag})) {
+    const ModelSurface* surface = model.surface(tag);
+    if (!surface || !surface->geometry || surface->geometry->isPlane() ||
+        hasPole(model, *surface))
+      continue;  // see meshSurface: a pole's ring of points does the bend's work there
+    for (int k = 0; k <= kPlaces; ++k) {
+      const double t = range.min + (range.max - range.min) * k / kPlaces;
+      const auto uv = surface->geometry->curveParameters(curve.tag, t);
+      if (uv && sizesOutgrowBend(surfaceCurvature(*surface->geometry, *uv), largest)) {
+        bent.push_back(surface->geometry.get());
+        break;
+      }
+    }
+  }
+  return bent;
+}
+
+// The parameters of the curve at SizeIntegral's sample arc lengths.
+std::vector<double> sampleParameters(const ModelCurve& curve, const ArcLengthTable& arc) {
+  const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
+  const Interval range = curve.geometry->range();
+  std::vector<double> ts;
+  ts.reserve(sigma.size());
+  for (std::size_t k = 0; k < sigma.size(); ++k)
+    ts.push_back(arc.length() > 0 ? arc.parameterAt(sigma[k])
+                                  : range.min + (range.max - range.min) * k / (sigma.size() - 1));
+  return ts;
+}
+
+// The bend bound (bendSize) of the surfaces the curve bounds whose bends the sizes along it
+// could outgrow, at SizeIntegral's sample arc lengths; empty when no bend is that tight.
+std::vector<double> sampleBendBounds(const Model& model, const ModelCurve& curve,
+                                     const ArcLengthTable& arc, double largest) {
+  const std::vector<const SurfaceGeometry*> bent = tightlyBentSurfaces(model, curve, largest);
+  if (bent.empty()) return {};
+  const std::vector<double> ts = sampleParameters(curve, arc);
+  // Evaluated every `stride` samples, no farther apart than half the largest size, and
+  // interpolated between.
+  const std::size_t last = ts.size() - 1;
+  const double spacing = arc.length() / static_cast<double>(last);
+  const std::size_t stride = std::clamp<std::size_t>(
+      spacing > 0 ? static_cast<std::size_t>(0.5 * largest / spacing) : last, 1, 16);
+  std::vector<double> sizes(ts.size(), 1e22);
+  std::size_t previous = 0;
+  for (std::size_t k = 0;; k = std::min(k + stride, last)) {
+    for (const SurfaceGeometry* g : bent)
+      if (const auto uv = g->curveParameters(curve.tag, ts[k]))
+        sizes[k] = std::min(sizes[k], bendSize(surfaceCurvature(*g, *uv), largest));
+    for (std::size_t j = previous + 1; j < k; ++j) {
+      const double w = static_cast<double>(j - previous) / static_cast<double>(k - previous);
+      sizes[j] = (1 - w) * sizes[previous] + w * sizes[k];
+    }
+    previous = k;
+    if (k == last) break;
+  }
+  return sizes;
+}
 
 // Bounds on the size besides the end points' sizes, at SizeIntegral's sample arc lengths: the
 // background field and the curvature bound (SizeRules::curvatureSize) of the curve and of the
@@ -127,17 +194,10 @@ std::vector<double> sampleSizeBounds(const Model& model, const ModelCurve& curve
                                      const SizeFields* fields) {
   const bool field = fields && fields->hasBackground();
   if (!field && !(rules.elementsPerTwoPi > 0)) return {};
-  const std::vector<double> sigma = SizeIntegral::fieldSampleArcLengths(arc.length());
-  const Interval range = curve.geometry->range();
-  std::vector<double> ts;
+  const std::vector<double> ts = sampleParameters(curve, arc);
   std::vector<Vec3> points;
-  ts.reserve(sigma.size());
-  points.reserve(sigma.size());
-  for (std::size_t k = 0; k < sigma.size(); ++k) {
-    ts.push_back(arc.length() > 0 ? arc.parameterAt(sigma[k])
-                                  : range.min + (range.max - range.min) * k / (sigma.size() - 1));
-    points.push_back(curve.geometry->point(ts.back()));
-  }
+  points.reserve(ts.size());
+  for (double t : ts) points.push_back(curve.geometry->point(t));
   std::vector<double> sizes(points.size(), 1e22);
   if (field) fields->evaluate(points, {1, curve.tag}, sizes);
   for (std::size_t k = 0; k < sizes.size(); ++k)
@@ -222,8 +282,13 @@ void meshCurve(const Model& model, const ModelCurve& curve, const SizeRules& rul
     return;
   }
   const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
+  // The largest size the curve could get: its ends' sizes, or the field's bound.
+  const bool field = fields && fields->hasBackground();
+  const double largest =
+      std::min(rules.finish(field ? rules.sizeMax : std::max(startSize, endSize)), arc.length());
   const SizeIntegral integral(arc.length(), startSize, endSize, rules,
-                              sampleSizeBounds(model, curve, arc, rules, fields));
+                              sampleSizeBounds(model, curve, arc, rules, fields),
+                              sampleBendBounds(model, curve, arc, largest));
   if (!std::isfinite(integral.total())) throw MeshError(id, "invalid mesh size along the curve");
   constexpr double kMaxSegments = 1e9;  // node indices are 32-bit
   if (integral.total() > kMaxSegments)

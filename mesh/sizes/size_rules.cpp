@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 
@@ -84,6 +85,29 @@ Vec3 unitNormal(const SurfaceGeometry& g, Vec2 uv) {
 
 // Principal curvatures are the roots k of det(II - k I) = 0, with the first fundamental form
 // I = (E, F, G) and the second II = (L, M, N) = -(n_u.x_u, (n_u.x_v + n_v.x_u) / 2, n_v.x_v).
+namespace {
+constexpr double kElementsPerBend = 6;  // per full turn, about as many as circles get (Mesh.MinimumCircleNodes)
+}  // namespace
+
+double bendSize(double curvature, double largest) {
+  constexpr double kFloor = 0.1;
+  if (!(curvature > 0)) return kUnbounded;
+  return std::max(2 * std::numbers::pi / (kElementsPerBend * curvature), kFloor * largest);
+}
+
+// Half the bound, so that a bend sampled a little off its tightest place still counts.
+bool sizesOutgrowBend(double curvature, double largest) {
+  return curvature > 0 && largest > std::numbers::pi / (kElementsPerBend * curvature);
+}
+
+bool hasPole(const Model& model, const ModelSurface& surface) {
+  for (const std::vector<int>& loop : surface.loops)
+    for (int c : loop)
+      if (const ModelCurve* curve = model.curve(std::abs(c)))
+        if (curve->geometry && curve->geometry->isDegenerate()) return true;
+  return false;
+}
+
 double surfaceCurvature(const SurfaceGeometry& g, Vec2 uv) {
   const ParamBox box = g.bounds();
   const double hu = 1e-5 * std::max(1.0, std::abs(box.u.max - box.u.min));

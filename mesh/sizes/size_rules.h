@@ -52,6 +52,21 @@ struct SizeRules {
   int minimumSegments(const CurveGeometry& g) const;
 };
 
+// The largest size that keeps a few elements across a full turn of a bend of the given
+// curvature, where sizes up to `largest` were asked for (unbounded on a flat place). With
+// fewer, a triangle wraps round the bend (a slender cylinder's girth, the sharp edge of a thin
+// profile) and faces away from the surface at one of its corners. Curves bounding a surface
+// and the surface's interior both keep to it. It never falls below a tenth of `largest`, so
+// that a bend tightening without end cannot ask for endless refinement.
+double bendSize(double curvature, double largest);
+
+// Whether sizes up to `largest` could outgrow a bend of the given curvature: only then is the
+// bend bound worth evaluating everywhere.
+bool sizesOutgrowBend(double curvature, double largest);
+
+// Whether a curve bounding the surface is degenerate (a pole: a cone's apex, a sphere's tip).
+bool hasPole(const Model& model, const ModelSurface& surface);
+
 // The curvature of a curve at parameter t: |c' x c''| / |c'|^3.
 double curveCurvature(const CurveGeometry& g, double t);
 

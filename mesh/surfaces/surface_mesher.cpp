@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <cstdlib>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -376,6 +375,35 @@ void storeMesh(const PlanarMesh& planar, const SurfaceInput& in, const WorkFrame
   }
 }
 
+// The greatest curvature found on a grid over the parameter box and at the boundary's points:
+// enough to tell whether sizes could outgrow a bend (see bendSize).
+double sampledCurvature(const SurfaceGeometry& g, const std::vector<Vec2>& boundary) {
+  const ParamBox box = g.bounds();
+  constexpr int kSamples = 32;
+  double worst = 0;
+  for (Vec2 uv : boundary) worst = std::max(worst, surfaceCurvature(g, uv));
+  if (!std::isfinite(box.u.max - box.u.min) || !std::isfinite(box.v.max - box.v.min))
+    return worst;
+  for (int i = 0; i <= kSamples; ++i)
+    for (int j = 0; j <= kSamples; ++j) {
+      const double fu = static_cast<double>(i) / kSamples, fv = static_cast<double>(j) / kSamples;
+      worst = std::max(worst, surfaceCurvature(g, {box.u.min + fu * (box.u.max - box.u.min),
+                                                   box.v.min + fv * (box.v.max - box.v.min)}));
+    }
+  return worst;
+}
+
+// The largest size the interior may take before a field or curvature bound applies: the
+// boundary's sizes extend inwards, or sizeMax is used everywhere.
+double largestInteriorSize(const Triangulation2D& tri, const SurfaceInput& in,
+                           const SizeRules& rules) {
+  if (!rules.extendFromBoundary) return rules.finish(rules.sizeMax);
+  double largest = 0;
+  for (std::uint32_t k = 0; k < in.nodes.size(); ++k)
+    largest = std::max(largest, tri.size(k + Triangulation2D::kFirstVertex));
+  return largest;
+}
+
 }  // namespace
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
@@ -399,17 +427,28 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
     throw MeshError(id, "the boundary encloses no area");
 
   const SurfaceMetric metric(g, frame);
-  // Bounds on the interior's size besides the boundary's: the background field, and with
-  // Mesh.MeshSizeFromCurvature the surface's own curvature.
+  setBoundarySizes(in, rules, mesh, tri);
+  // Bounds on the interior's size besides the boundary's: the background field, with
+  // Mesh.MeshSizeFromCurvature the surface's own curvature, and always a few elements per
+  // turn of a bend tighter than the sizes (checked on samples first: on most surfaces the
+  // sizes are far below every bend, and the bound costs nothing).
   const bool withField = fields && fields->hasBackground();
   const bool withCurvature = rules.elementsPerTwoPi > 0 && !g.isPlane();
+  const double largest = std::max(largestInteriorSize(tri, in, rules),
+                                  withField ? rules.finish(rules.sizeMax) : 0.0);
+  // Not on a surface with a pole: towards a cone's apex the bend tightens without end, and the
+  // ring of points around the pole already keeps the triangles there from wrapping round it.
+  const bool withBend = !g.isPlane() && !hasPole(model, surface) &&
+                        sizesOutgrowBend(sampledCurvature(g, uv), largest);
   const WorkPlaneSize field = [&](Vec2 work) {
     const Vec2 uv = frame.toParam(work);
     double size = withField ? fields->at(g.point(uv), id) : rules.sizeMax;
-    if (withCurvature) size = std::min(size, rules.curvatureSize(surfaceCurvature(g, uv)));
-    return rules.finish(size);
+    if (!withCurvature && !withBend) return rules.finish(size);
+    const double k = surfaceCurvature(g, uv);
+    if (withCurvature) size = std::min(size, rules.curvatureSize(k));
+    // The bend bound holds even below Mesh.MeshSizeMin: a valid mesh comes first.
+    return std::min(rules.finish(size), withBend ? bendSize(k, largest) : 1e22);
   };
-  setBoundarySizes(in, rules, mesh, tri);
   for (std::size_t k = 0; k < in.seeds.size(); ++k)
     tri.setSize(firstSeed(in) + static_cast<std::uint32_t>(k), in.seedSize);
   // The rings around poles stay where they are put: smoothing in the surface's metric, which
@@ -418,7 +457,7 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
       firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
   SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
                            g.isPlane() ? nullptr : &metric,
-                           withField || withCurvature ? &field : nullptr};
+                           withField || withCurvature || withBend ? &field : nullptr};
   const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);

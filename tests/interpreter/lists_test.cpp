@@ -22,6 +22,25 @@ TEST(Lists, IndexingWithListsAndOldSyntax) {
   EXPECT_EQ(printed("l[] = {1,2,3}; Printf(\"%g %g\", l(1), #l());"), "2 3\n");
 }
 
+// As the reference: f({i:j}) and f[{i, j}] are the items at those indices, wherever a list
+// may stand.
+TEST(Lists, OldSyntaxIndexedByAList) {
+  const std::string f = "f() = {10, 20, 30, 40};\n";
+  EXPECT_EQ(printed(f + "g() = f({1:2}); Printf(\"%g %g n=%g\", g(0), g(1), #g());"),
+            "20 30 n=2\n");
+  EXPECT_EQ(printed(f + "g() = f({3, 0, 3}); Printf(\"%g %g %g\", g(0), g(1), g(2));"),
+            "40 10 40\n");
+  EXPECT_EQ(printed(f + "i() = {1, 2}; g() = f({i()}); Printf(\"%g %g\", g(0), g(1));"), "20 30\n");
+  EXPECT_EQ(printed(f + "g() = {f({1:2}), 5}; Printf(\"%g %g %g\", g(0), g(1), g(2));"),
+            "20 30 5\n");
+  EXPECT_EQ(printed(f + "g() = -f({0, 1}); Printf(\"%g %g\", g(0), g(1));"), "-10 -20\n");
+  EXPECT_EQ(printed(f + "x = f({2}); Printf(\"%g\", x);"), "30\n");
+  EXPECT_EQ(firstLineOf(f + "g() = f({1:4});"),
+            "test.geo:2:9: error: index 4 out of range for 'f' (4 items)");
+  EXPECT_EQ(firstLineOf(f + "g() = f(4);"),
+            "test.geo:2:9: error: index 4 out of range for 'f' (4 items)");
+}
+
 TEST(Lists, AppendRemoveAndGrow) {
   EXPECT_EQ(printed("z[] = {}; z[] += {4, 5}; z[] += 6; Printf(\"n=%g last=%g\", #z[], z[2]);"),
             "n=3 last=6\n");

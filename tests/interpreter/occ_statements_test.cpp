@@ -40,6 +40,54 @@ TEST(OccStatements, BooleansAsStatementsAndValues) {
             "1 3\n3 4 5 6\n3\n");
 }
 
+// An empty tool block `{}`, as the reference takes it: fragments of the objects alone (the
+// usual way to glue many volumes), tagged or not; the other operations fail without a tool.
+TEST(OccStatements, BooleansWithAnEmptyToolBlock) {
+  const std::string boxes = "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0.5, 0, 0, 1, 1, 1};\n"
+                            "Box(3) = {3, 0, 0, 1, 1, 1};\n";
+  const std::string list = "For i In {0:#r()-1}\n  Printf(\"%g\", r(i));\nEndFor\n";
+  EXPECT_EQ(printed(kOcc + boxes + "r() = BooleanFragments{ Volume{1, 2, 3}; Delete; }{};\n" +
+                    list),
+            "4\n5\n6\n3\n");
+  EXPECT_EQ(printed(kOcc + boxes + "BooleanFragments{ Volume{1:3}; Delete; }{ }\n"
+                                   "r() = Volume{:};\n" + list),
+            "3\n4\n5\n6\n");
+  EXPECT_EQ(printed(kOcc + boxes + "Box(4) = {3, 0, 0, 1, 1, 1};\n"
+                                   "BooleanFragments(10) = { Volume{3, 4}; Delete; }{};\n"
+                                   "r() = Volume{:};\n" + list),
+            "1\n2\n10\n");
+  for (const std::string word : {"BooleanUnion", "BooleanDifference", "BooleanIntersection"}) {
+    EXPECT_EQ(firstLineOf(kOcc + boxes + word + "{ Volume{1, 2}; Delete; }{}\n"),
+              "test.geo:5:1: error: " + word + ": no tool to operate with");
+    EXPECT_EQ(firstLineOf(kOcc + boxes + "r() = " + word + "{ Volume{1, 2}; Delete; }{};\n"),
+              "test.geo:5:7: error: " + word + ": no tool to operate with");
+    EXPECT_EQ(firstLineOf(kOcc + boxes + word + "(7) = { Volume{1, 2}; Delete; }{};\n"),
+              "test.geo:5:1: error: " + word + ": no tool to operate with");
+  }
+  EXPECT_EQ(firstLineOf(kOcc + boxes + "BooleanFragments(10) = { Volume{1, 2}; Delete; }{};\n")
+                .rfind("test.geo:5:1: error: BooleanFragments 10: its result has 3 Volume", 0),
+            0u);
+}
+
+// As the reference: nothing done, nothing deleted and an empty result for a Boolean without
+// objects, or for fragments of a single shape; geomesh warns of it.
+TEST(OccStatements, BooleansWithNothingToDoAreWarnedOf) {
+  const std::string boxes = "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0.5, 0, 0, 1, 1, 1};\n";
+  ScriptRun run;
+  run.run(kOcc + boxes +
+          "r() = BooleanFragments{ Volume{1}; Delete; }{};\n"
+          "s() = BooleanDifference{}{ Volume{2}; Delete; };\n"
+          "BooleanUnion{ Volume{r()}; }{}\n"
+          "v() = Volume{:};\nPrintf(\"%g %g %g %g %g\", #r(), #s(), #v(), v(0), v(1));\n");
+  EXPECT_EQ(run.out.str(), "0 0 2 1 2\n");
+  EXPECT_EQ(run.log.warnings,
+            (std::vector<std::string>{
+                "test.geo:4:7: warning: BooleanFragments of a single shape: nothing done",
+                "test.geo:5:7: warning: BooleanDifference has no object to operate on: nothing "
+                "done",
+                "test.geo:6:1: warning: BooleanUnion has no object to operate on: nothing done"}));
+}
+
 // Geometry.OCCBooleanPreserveNumbering = 0: the result takes a new tag; Geometry.OCCUnionUnify
 // (OCCBooleanSimplify) = 0: a union keeps the faces of its arguments; as the reference.
 TEST(OccStatements, BooleanOptions) {

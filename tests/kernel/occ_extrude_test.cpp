@@ -100,5 +100,79 @@ TEST(OccExtrude, AlongAWire) {
   EXPECT_THROW(occ.extrudeAlongWire({{2, 1}}, 7), GeometryError);
 }
 
+// The mesh size the model gives the point at `at` (-1 if there is none there).
+double sizeAt(const Model& model, Vec3 at) {
+  for (const auto& [tag, p] : model.points())
+    if (distance(p.xyz, at) < 1e-9) return p.meshSize;
+  return -1;
+}
+
+// As in the reference, the points an extrusion makes have the mesh sizes of the points they
+// were swept from, as these were when swept; a point swept from one with no size has none.
+TEST(OccExtrude, NewPointsTakeTheMeshSizesOfTheirSources) {
+  OccFactory occ;
+  occ.addPoint(1, {0, 0, 0}, 0.1);
+  occ.addPoint(2, {1, 0, 0}, 0.2);
+  occ.addPoint(3, {1, 1, 0}, 0.3);
+  occ.addPoint(4, {0, 1, 0}, 0);
+  for (int i = 1; i <= 4; ++i) occ.addLine(i, i, i % 4 + 1);
+  occ.addCurveLoop(1, {1, 2, 3, 4});
+  occ.addPlaneSurface(1, {1});
+  occ.extrude({{2, 1}}, ExtrusionMotion::translate({0, 0, 1}), {});
+  occ.addPoint(20, {5, 0, 0}, 0.05);
+  occ.extrude({{0, 20}}, ExtrusionMotion::rotate({0, 1, 0}, {4, 0, 0}, std::numbers::pi), {});
+  occ.setMeshSize({20}, 0.5);  // after the sweep: the swept point keeps 0.05
+  Model model;
+  occ.synchronize(model);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {0, 0, 1}), 0.1);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {1, 0, 1}), 0.2);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {1, 1, 1}), 0.3);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {0, 1, 1}), 0);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {3, 0, 0}), 0.05);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {5, 0, 0}), 0.5);
+}
+
+// A point swept from one with no size has none, even under the tag of a removed point that
+// had one.
+TEST(OccExtrude, NewPointsDoNotTakeTheSizeOfARemovedPoint) {
+  OccFactory occ;
+  occ.addPoint(1, {0, 0, 0}, 0);
+  occ.addPoint(2, {1, 0, 0}, 0.5);
+  occ.remove({{0, 2}}, false);
+  const std::vector<EntityId> r = occ.extrude({{0, 1}}, ExtrusionMotion::translate({0, 0, 1}), {});
+  ASSERT_EQ(r[0], (EntityId{0, 2}));
+  Model model;
+  occ.synchronize(model);
+  EXPECT_DOUBLE_EQ(sizeAt(model, {0, 0, 1}), 0);
+}
+
+// Extrude Using Wire: the reference gives a point the size of a point at the same place, so
+// the copies of the profile's points at the start of the pipe have their sizes; the points
+// at its far end have none.
+TEST(OccExtrude, PipeStartPointsTakeTheSizesOfTheProfilePoints) {
+  OccFactory occ;
+  occ.addPoint(1, {0, 0, 5}, 0.3);
+  occ.addPoint(2, {0, 0, 6}, 0.4);
+  occ.addLine(1, 1, 2);
+  occ.addWire(1, {1});
+  occ.addPoint(10, {0.2, 0, 5}, 0.01);
+  occ.addPoint(11, {0.4, 0, 5}, 0.02);
+  occ.addLine(10, 10, 11);
+  occ.extrudeAlongWire({{1, 10}}, 1);
+  Model model;
+  occ.synchronize(model);
+  int atStart = 0;
+  for (const auto& [tag, p] : model.points()) {
+    if (tag <= 11) continue;
+    if (p.xyz.z == 5) {
+      ++atStart;
+      EXPECT_DOUBLE_EQ(p.meshSize, p.xyz.x < 0.3 ? 0.01 : 0.02) << "point " << tag;
+    } else {
+      EXPECT_EQ(p.meshSize, 0) << "point " << tag;
+    }
+  }
+  EXPECT_EQ(atStart, 2);
+}
+
 }  // namespace
 }  // namespace geomesh

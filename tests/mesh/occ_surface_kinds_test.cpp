@@ -421,6 +421,35 @@ TEST(OccSurfaceKinds, SolidsBoundedByEveryKindFillWithTetrahedra) {
   }
 }
 
+// Sizes far larger than a bend: a slender cylinder (radius 0.02, size 0.1) and a thin elliptic
+// tube (tips of radius 0.01). With the sizes asked for, a triangle would wrap round the girth
+// or the tip; a few elements per turn keep every one facing out, on the seam too.
+TEST(OccSurfaceKinds, SlenderShapesKeepAFewElementsPerTurn) {
+  const TopoDS_Shape rod = BRepPrimAPI_MakeCylinder(0.02, 1.0).Shape();
+  const gp_Elips ellipse(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0, 0.1);
+  const TopoDS_Shape tube =
+      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeEdge(new Geom_Ellipse(ellipse)).Edge(),
+                            gp_Vec(0, 0, 1))
+          .Shape();
+  for (const Case& c : {Case{"slender_rod", rod, true}, Case{"thin_tube", tube, false}}) {
+    SCOPED_TRACE(c.name);
+    const Model model = modelOf(c.shape, c.name);
+    MeshOptions options;
+    options.sizeMax = 0.1;
+    options.sizeMin = 0.05;  // the bend's bound holds below Mesh.MeshSizeMin too
+    const Mesh mesh = surfaceMesh(model, c, options, 0.05);
+    EXPECT_GT(countOf(mesh, 2, ElementType::Triangle3), 50u);
+    if (!c.solid) continue;
+    QuietSink log;
+    Mesh volume;
+    generateMesh(model, options, 3, volume, log);
+    EXPECT_TRUE(checkMesh(model, volume).ok());
+    // The end disks are heptagons (Mesh.MinimumCircleNodes = 7), 13% short of the circles.
+    const double exact = exactVolume(c.shape);
+    EXPECT_NEAR(meshVolume(volume), exact, 0.15 * exact);
+  }
+}
+
 // Ellipse, Bezier, offset and trimmed curves: every node on its curve, and the polyline's
 // length converging to the curves' as h^2 (chords fall short by about h^2 k^2 / 24).
 TEST(OccSurfaceKinds, EveryCurveKindKeepsItsLength) {

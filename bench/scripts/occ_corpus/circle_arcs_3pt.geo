@@ -1,0 +1,20 @@
+// A 2D crescent made of circle arcs given by start/centre/end points, OCC kernel.
+SetFactory("OpenCASCADE");
+R1 = 1.0; R2 = 0.8; d = 0.35;
+Point(1) = {0, 0, 0};
+Point(2) = {d, 0, 0};
+Point(3) = {0, R1, 0};
+Point(4) = {0, -R1, 0};
+Point(5) = {-R1, 0, 0};
+s = Sqrt(R2^2 - d^2);
+Point(6) = {0, s, 0};
+Point(7) = {0, -s, 0};
+Circle(1) = {3, 1, 5};
+Circle(2) = {5, 1, 4};
+Line(3) = {4, 7};
+Circle(4) = {7, 2, 6};
+Line(5) = {6, 3};
+Curve Loop(1) = {1, 2, 3, 4, 5};
+Plane Surface(1) = {1};
+MeshSize{ PointsOf{ Surface{1}; } } = 0.04;
+Physical Surface("crescent") = {1};
