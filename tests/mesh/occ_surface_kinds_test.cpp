@@ -48,16 +48,13 @@
 #include "kernel/occ/occ_factory.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/pipeline/generate.h"
+#include "mesh_measures.h"
 #include "tests/scratch.h"
 
 namespace geomesh {
 namespace {
 
-class QuietSink final : public MessageSink {
- public:
-  void info(std::string_view) override {}
-  void warning(std::string_view) override {}
-};
+using namespace testing;
 
 // What OpenCASCADE integrates on the exact shape.
 double exactArea(const TopoDS_Shape& shape) {
@@ -89,62 +86,6 @@ Model modelOf(const TopoDS_Shape& shape, const std::string& name) {
   Model model;
   occ.synchronize(model);
   return model;
-}
-
-double meshArea(const Mesh& mesh) {
-  double area = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != 2) continue;
-    if (const ElementBlock* t = em.findBlock(ElementType::Triangle3))
-      for (std::size_t e = 0; e < t->size(); ++e) {
-        const auto n = t->element(e);
-        const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
-        area += 0.5 * norm(cross(b - a, c - a));
-      }
-    if (const ElementBlock* q = em.findBlock(ElementType::Quad4))
-      for (std::size_t e = 0; e < q->size(); ++e) {
-        const auto n = q->element(e);
-        const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]),
-                   d = mesh.node(n[3]);
-        area += 0.5 * norm(cross(b - a, c - a)) + 0.5 * norm(cross(c - a, d - a));
-      }
-  }
-  return area;
-}
-
-double meshVolume(const Mesh& mesh) {
-  double volume = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != 3) continue;
-    if (const ElementBlock* t = em.findBlock(ElementType::Tet4))
-      for (std::size_t e = 0; e < t->size(); ++e) {
-        const auto n = t->element(e);
-        const Vec3 a = mesh.node(n[0]);
-        volume += dot(mesh.node(n[1]) - a, cross(mesh.node(n[2]) - a, mesh.node(n[3]) - a)) / 6;
-      }
-  }
-  return volume;
-}
-
-double meshLength(const Mesh& mesh) {
-  double length = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != 1) continue;
-    if (const ElementBlock* l = em.findBlock(ElementType::Line2))
-      for (std::size_t e = 0; e < l->size(); ++e) {
-        const auto n = l->element(e);
-        length += norm(mesh.node(n[1]) - mesh.node(n[0]));
-      }
-  }
-  return length;
-}
-
-std::size_t countOf(const Mesh& mesh, int dim, ElementType type) {
-  std::size_t count = 0;
-  for (const auto& [id, em] : mesh.entities())
-    if (id.dim == dim)
-      if (const ElementBlock* b = em.findBlock(type)) count += b->size();
-  return count;
 }
 
 // --- The shapes -------------------------------------------------------------------------------
@@ -290,7 +231,7 @@ Mesh surfaceMesh(const Model& model, const Case& c, const MeshOptions& options, 
   const MeshCheckReport report = checkMesh(model, mesh);
   EXPECT_TRUE(report.ok()) << c.name << ":\n" << report.summary();
   const double area = exactArea(c.shape);
-  EXPECT_NEAR(meshArea(mesh), area, tol * area) << c.name;
+  EXPECT_NEAR(totalArea(mesh), area, tol * area) << c.name;
   return mesh;
 }
 
@@ -416,7 +357,7 @@ TEST(OccSurfaceKinds, SolidsBoundedByEveryKindFillWithTetrahedra) {
     const MeshCheckReport report = checkMesh(model, mesh);
     EXPECT_TRUE(report.ok()) << report.summary();
     const double volume = exactVolume(c.shape);
-    EXPECT_NEAR(meshVolume(mesh), volume, 0.01 * volume);
+    EXPECT_NEAR(totalVolume(mesh), volume, 0.01 * volume);
     EXPECT_GT(countOf(mesh, 3, ElementType::Tet4), 1000u);
   }
 }
@@ -446,7 +387,7 @@ TEST(OccSurfaceKinds, SlenderShapesKeepAFewElementsPerTurn) {
     EXPECT_TRUE(checkMesh(model, volume).ok());
     // The end disks are heptagons (Mesh.MinimumCircleNodes = 7), 13% short of the circles.
     const double exact = exactVolume(c.shape);
-    EXPECT_NEAR(meshVolume(volume), exact, 0.15 * exact);
+    EXPECT_NEAR(totalVolume(volume), exact, 0.15 * exact);
   }
 }
 
@@ -472,7 +413,7 @@ TEST(OccSurfaceKinds, EveryCurveKindKeepsItsLength) {
     EXPECT_TRUE(report.ok()) << report.summary();
     EXPECT_NEAR(static_cast<double>(countOf(mesh, 1, ElementType::Line2)), exact / h,
                 0.05 * exact / h);
-    return exact - meshLength(mesh);
+    return exact - totalLength(mesh);
   };
   const double coarse = shortfall(0.05), fine = shortfall(0.0125);
   EXPECT_GT(coarse, 0);

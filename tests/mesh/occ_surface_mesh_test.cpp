@@ -11,6 +11,7 @@
 #include "kernel/occ/occ_factory.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/pipeline/generate.h"
+#include "mesh_measures.h"
 #include "mesh_test_models.h"
 #include "tests/occ_fixtures.h"
 
@@ -18,12 +19,9 @@ namespace geomesh {
 namespace {
 
 using namespace occ_fixtures;
-
-class QuietSink final : public MessageSink {
- public:
-  void info(std::string_view) override {}
-  void warning(std::string_view) override {}
-};
+using testing::QuietSink;
+using testing::totalArea;
+using testing::totalVolume;
 
 Model importedModel(const std::string& path) {
   OccFactory occ;
@@ -31,34 +29,6 @@ Model importedModel(const std::string& path) {
   Model model;
   occ.synchronize(model);
   return model;
-}
-
-double triangleArea(const Mesh& mesh) {
-  double area = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != 2) continue;
-    if (const ElementBlock* t = em.findBlock(ElementType::Triangle3))
-      for (std::size_t e = 0; e < t->size(); ++e) {
-        const auto n = t->element(e);
-        const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
-        area += 0.5 * norm(cross(b - a, c - a));
-      }
-  }
-  return area;
-}
-
-double tetVolume(const Mesh& mesh) {
-  double volume = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != 3) continue;
-    if (const ElementBlock* t = em.findBlock(ElementType::Tet4))
-      for (std::size_t e = 0; e < t->size(); ++e) {
-        const auto n = t->element(e);
-        const Vec3 a = mesh.node(n[0]);
-        volume += dot(mesh.node(n[1]) - a, cross(mesh.node(n[2]) - a, mesh.node(n[3]) - a)) / 6;
-      }
-  }
-  return volume;
 }
 
 struct Measured {
@@ -77,13 +47,13 @@ Measured meshPart(const Part& part, const std::string& path, double h, double to
   generateMesh(model, options, 2, mesh, log);
   MeshCheckReport report = checkMesh(model, mesh);
   EXPECT_TRUE(report.ok()) << part.name << " 2D:\n" << report.summary();
-  EXPECT_NEAR(triangleArea(mesh), part.area, tolerance * part.area) << part.name;
+  EXPECT_NEAR(totalArea(mesh), part.area, tolerance * part.area) << part.name;
   Measured m{mesh.nodeCount(), mesh.elementCount(2), 0, 0};
   Mesh volume;
   generateMesh(model, options, 3, volume, log);
   report = checkMesh(model, volume);
   EXPECT_TRUE(report.ok()) << part.name << " 3D:\n" << report.summary();
-  EXPECT_NEAR(tetVolume(volume), part.volume, tolerance * part.volume) << part.name;
+  EXPECT_NEAR(totalVolume(volume), part.volume, tolerance * part.volume) << part.name;
   m.nodes3D = volume.nodeCount();
   m.tets = volume.elementCount(3);
   return m;
@@ -216,7 +186,7 @@ TEST(OccSurfaceMesh, LoopsCloseWhereCurvesOnTheSurfaceMissEachOther) {
   generateMesh(b.model, {}, 2, mesh, log);
   const MeshCheckReport report = checkMesh(b.model, mesh);
   EXPECT_TRUE(report.ok()) << report.summary();
-  EXPECT_NEAR(triangleArea(mesh), 1.0, 1e-3);
+  EXPECT_NEAR(totalArea(mesh), 1.0, 1e-3);
 }
 
 }  // namespace
