@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "kernel/geo/ellipse_arc_geometry.h"
 #include "kernel/geo/line_geometry.h"
@@ -209,6 +210,18 @@ TEST(MinimumSegments, ClosedCurvesGetAtLeastThree) {
   const Mesh mesh = meshCurves(model, {});
   EXPECT_EQ(segments(mesh, 1), 3u);
   EXPECT_GT(longestSegment(model, mesh, 1), 0);
+}
+
+// The bend bound: left alone while an element spans at most a quarter turn (a fillet of radius
+// 0.08 under size 0.12), applied beyond (a rod of radius 0.02 under size 0.1), six elements per
+// turn then, never below a tenth of the largest size.
+TEST(BendSize, AppliesOnlyWhereElementsWouldWrapRoundTheBend) {
+  EXPECT_FALSE(sizesOutgrowBend(1 / 0.08, 0.12));
+  EXPECT_TRUE(sizesOutgrowBend(1 / 0.02, 0.1));
+  EXPECT_FALSE(sizesOutgrowBend(0, 1e22));
+  EXPECT_NEAR(bendSize(1 / 0.02, 0.1), 2 * std::numbers::pi * 0.02 / 6, 1e-12);
+  EXPECT_NEAR(bendSize(1e6, 0.1), 0.01, 1e-12);
+  EXPECT_GT(bendSize(0, 0.1), 1e20);
 }
 
 }  // namespace

@@ -9,12 +9,14 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -40,6 +42,7 @@
 #include <gp_Ax2.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Elips.hxx>
+#include <gp_GTrsf.hxx>
 
 #include <cmath>
 #include <numbers>
@@ -48,6 +51,7 @@
 #include "kernel/occ/occ_factory.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/pipeline/generate.h"
+#include "mesh/sizes/size_rules.h"
 #include "mesh_measures.h"
 #include "tests/scratch.h"
 
@@ -389,6 +393,36 @@ TEST(OccSurfaceKinds, SlenderShapesKeepAFewElementsPerTurn) {
     const double exact = exactVolume(c.shape);
     EXPECT_NEAR(totalVolume(volume), exact, 0.15 * exact);
   }
+}
+
+// A sphere squashed to an ellipsoid (1, 1, 0.5) by a non-uniform scaling is a B-spline surface
+// closing on a pole at each end. The curvature there is the ellipsoid's (0.5 / 1 = 0.5 both
+// ways), not the blow-up of a derivative that vanishes at the pole.
+TEST(OccSurfaceKinds, CurvatureAtAPoleIsTheSurfacesOwn) {
+  gp_GTrsf squash;
+  squash.SetValue(3, 3, 0.5);
+  const TopoDS_Shape ellipsoid =
+      BRepBuilderAPI_GTransform(BRepPrimAPI_MakeSphere(1.0).Shape(), squash, true).Shape();
+  ASSERT_TRUE(hasFaceOf<Geom_BSplineSurface>(ellipsoid));
+  const Model model = modelOf(ellipsoid, "ellipsoid");
+  ASSERT_EQ(model.surfaces().size(), 1u);
+  const SurfaceGeometry& g = *model.surfaces().begin()->second.geometry;
+  const ParamBox box = g.bounds();
+  const double u = 0.5 * (box.u.min + box.u.max);
+  for (double v : {box.v.min, box.v.max}) {
+    const Vec3 p = g.point({u, v});
+    ASSERT_NEAR(std::abs(p.z), 0.5, 1e-6);  // a pole
+    EXPECT_NEAR(surfaceCurvature(g, {u, v}), 0.5, 0.025);
+  }
+  // Sized by curvature, the seam from pole to pole is meshed at once (it used to ask for more
+  // than a billion segments there).
+  MeshOptions options;
+  options.sizeFromCurvature = 16;
+  QuietSink log;
+  Mesh mesh;
+  generateMesh(model, options, 2, mesh, log);
+  EXPECT_TRUE(checkMesh(model, mesh).ok());
+  EXPECT_LT(mesh.nodeCount(), 5000u);
 }
 
 // Ellipse, Bezier, offset and trimmed curves: every node on its curve, and the polyline's
