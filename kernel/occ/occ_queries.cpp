@@ -34,13 +34,14 @@ namespace {
 
 constexpr TopAbs_ShapeEnum kTypes[4] = {TopAbs_VERTEX, TopAbs_EDGE, TopAbs_FACE, TopAbs_SOLID};
 
-// A face's edges as Gmsh lists them: each wire of the face taken forward, chained from the
-// wire's first edge (in the order the wire stores its edges) along the wire.
+// A face's edges as the reference lists them: each wire of the face taken forward, as it stores
+// its edges (a wire reversed as a whole to bound the face is read as it was made, see
+// addPlaneSurface), chained from the wire's first stored edge along the wire.
 std::vector<int> faceEdges(const OccShapes& s, const TopoDS_Shape& faceShape) {
   const TopoDS_Face face = TopoDS::Face(faceShape.Oriented(TopAbs_FORWARD));
   std::vector<int> edges;
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
-    const TopoDS_Wire wire = TopoDS::Wire(w.Current());
+    const TopoDS_Wire wire = TopoDS::Wire(w.Current().Oriented(TopAbs_FORWARD));
     std::vector<int> chained;
     for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
       chained.push_back(s.tagOf(1, it.Current()));

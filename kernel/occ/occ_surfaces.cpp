@@ -16,20 +16,121 @@
 #include <ShapeFix_Solid.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_factory.h"
 #include "kernel/occ/occ_shapes.h"
 
 namespace geomesh {
+
+namespace {
+
+// The loop's edges in order along it, from the first edge it stores (the script's first curve),
+// each turned the way the loop runs. Empty when the edges do not chain into one loop.
+std::vector<TopoDS_Edge> chainFromFirst(const TopoDS_Wire& loop) {
+  std::vector<TopoDS_Edge> chain;
+  for (BRepTools_WireExplorer it(loop); it.More(); it.Next()) chain.push_back(it.Current());
+  std::size_t stored = 0;
+  for (TopoDS_Iterator it(loop); it.More(); it.Next()) ++stored;
+  if (chain.size() != stored) return {};
+  const TopoDS_Shape first = TopoDS_Iterator(loop).Value();
+  auto at = std::find_if(chain.begin(), chain.end(),
+                         [&](const TopoDS_Edge& e) { return e.IsSame(first); });
+  std::rotate(chain.begin(), at, chain.end());
+  return chain;
+}
+
+// The order in which the reference lists a loop of a plane surface it built: the outer loop as
+// the script's loop runs, from its first curve; a hole as that loop reversed as a whole, which
+// is how the reference puts every hole into its face, whichever way the hole ran: from its last
+// curve, against the loop. Each edge is turned the way the listing runs.
+std::vector<TopoDS_Edge> listingOrder(const TopoDS_Wire& loop, bool hole) {
+  std::vector<TopoDS_Edge> chain = chainFromFirst(loop);
+  if (!hole || chain.empty()) return chain;
+  std::reverse(chain.begin() + 1, chain.end());
+  for (TopoDS_Edge& e : chain) e.Reverse();
+  TopoDS_Shape last;
+  for (TopoDS_Iterator it(loop); it.More(); it.Next()) last = it.Value();
+  auto at = std::find_if(chain.begin(), chain.end(),
+                         [&](const TopoDS_Edge& e) { return e.IsSame(last); });
+  std::rotate(chain.begin(), at, chain.end());
+  return chain;
+}
+
+// The face's wire made of the same edges as `listed`, or null.
+TopoDS_Wire wireOfEdges(const TopoDS_Face& face, const std::vector<TopoDS_Edge>& listed) {
+  for (TopoDS_Iterator w(face, true, false); w.More(); w.Next()) {
+    if (w.Value().ShapeType() != TopAbs_WIRE) continue;
+    std::size_t count = 0, found = 0;
+    for (TopoDS_Iterator e(w.Value(), true, false); e.More(); e.Next(), ++count)
+      found += std::any_of(listed.begin(), listed.end(),
+                           [&](const TopoDS_Edge& l) { return l.IsSame(e.Value()); });
+    if (count == listed.size() && found == count) return TopoDS::Wire(w.Value());
+  }
+  return {};
+}
+
+// The face's loop `wire` stored in the listing's order, bounding the face as before. Where the
+// listing runs against the face's loop (a hole the reference would have left turned the wrong
+// way), the wire stores its edges the listing's way and is itself reversed: the face keeps its
+// orientation, and the listing (the wire taken as stored, see faceEdges) keeps the reference's.
+TopoDS_Wire storedInOrder(const TopoDS_Wire& wire, const std::vector<TopoDS_Edge>& listed) {
+  bool against = false;
+  for (TopoDS_Iterator e(wire); e.More(); e.Next())
+    if (e.Value().IsSame(listed.front()))
+      against = e.Value().Orientation() != listed.front().Orientation();
+  BRep_Builder builder;
+  TopoDS_Wire stored;
+  builder.MakeWire(stored);
+  for (const TopoDS_Edge& l : listed)
+    for (TopoDS_Iterator e(wire, true, false); e.More(); e.Next())
+      if (e.Value().IsSame(l)) {
+        TopoDS_Shape edge = e.Value();
+        edge.Orientation(l.Orientation());
+        builder.Add(stored, edge);
+      }
+  stored.Closed(true);
+  return TopoDS::Wire(stored.Oriented(against ? TopAbs_REVERSED : TopAbs_FORWARD));
+}
+
+// The plane face with each of its loops stored in the order the reference lists the script's
+// loop it came from (loops[0] the outer one). The face's geometry and its loops' edges and
+// orientations stay as they are; a loop not found as it was given is left alone.
+TopoDS_Face withLoopsInListingOrder(const TopoDS_Face& face,
+                                    const std::vector<TopoDS_Wire>& loops) {
+  const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  std::vector<std::pair<TopoDS_Wire, TopoDS_Wire>> replaced;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    const std::vector<TopoDS_Edge> listed = listingOrder(loops[i], i > 0);
+    if (listed.empty()) continue;
+    const TopoDS_Wire wire = wireOfEdges(forward, listed);
+    if (!wire.IsNull()) replaced.emplace_back(wire, storedInOrder(wire, listed));
+  }
+  BRep_Builder builder;
+  TopoDS_Face rebuilt = TopoDS::Face(forward.EmptyCopied());
+  for (TopoDS_Iterator it(forward, false, false); it.More(); it.Next()) {
+    TopoDS_Shape child = it.Value();
+    for (const auto& [old, stored] : replaced)
+      if (old.IsEqual(child)) child = stored;
+    builder.Add(rebuilt, child);
+  }
+  return TopoDS::Face(rebuilt.Oriented(face.Orientation()));
+}
+
+}  // namespace
 
 void OccFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   tag = primitiveTag(2, tag, "Plane Surface");
@@ -47,7 +148,7 @@ void OccFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
     ShapeFix_Face fix(maker.Face());
     fix.FixOrientation();
     fix.Perform();
-    return fix.Face();
+    return withLoopsInListingOrder(TopoDS::Face(fix.Face()), wires);
   });
   shapes_->bindTree(2, tag, face);
 }
