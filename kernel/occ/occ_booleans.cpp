@@ -5,14 +5,12 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepTools_History.hxx>
-#include <BRep_Tool.hxx>
 #include <Message_Report.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
-#include <TopoDS.hxx>
 
 #include <algorithm>
 #include <memory>
@@ -182,23 +180,33 @@ TopoDS_Shape taggedShape(const TopoDS_Shape& result, int tag, const std::string&
 }
 
 // Binds the result's shapes, highest dimension first, in the result's order: those not bound
-// yet get new tags, depth first. Lists each shape that is not part of one listed before.
-std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result) {
+// yet get new tags, depth first. Lists each shape that is not part of one listed before. The
+// shapes that took the tag of the input they replace (`passedOn`, bound alone already) number
+// their sub-shapes last, after those of every new shape, as the reference does: a box
+// fragmented with two overlapping boxes it touches keeps its tag, and its faces come after
+// those of the overlapping boxes' pieces (the face it shares with them among these).
+std::vector<EntityId> bindResult(OccShapes& shapes, const TopoDS_Shape& result,
+                                 const TopTools_IndexedMapOfShape& passedOn) {
   std::vector<EntityId> out;
   std::set<EntityId> listed;
   TopTools_IndexedMapOfShape inListed;  // sub-shapes of the shapes listed so far
+  std::vector<std::pair<int, TopoDS_Shape>> later;
   for (int dim = 3; dim >= 0; --dim) {
     TopExp_Explorer it = dim == 3 ? TopExp_Explorer(result, kTypes[3])
                                   : TopExp_Explorer(result, kTypes[dim], kTypes[dim + 1]);
     for (; it.More(); it.Next()) {
       if (inListed.Contains(it.Current())) continue;
-      const EntityId e{dim, shapes.bindNew(dim, it.Current())};
+      const bool passed = passedOn.Contains(it.Current());
+      const EntityId e{
+          dim, passed ? shapes.tagOf(dim, it.Current()) : shapes.bindNew(dim, it.Current())};
       if (!listed.insert(e).second) continue;
       out.push_back(e);
+      if (passed) later.emplace_back(dim, it.Current());
       for (int sub = dim - 1; sub >= 0; --sub)
         TopExp::MapShapes(it.Current(), kTypes[sub], inListed);
     }
   }
+  for (const auto& [dim, shape] : later) shapes.bindNew(dim, shape);
   return out;
 }
 
@@ -238,43 +246,67 @@ struct TaggedShape {
   TopoDS_Shape shape;
 };
 
-// The curves and faces of deleted tools that the result holds as they were, with their tags,
-// which they keep, as in the reference: the curves of a plate the tools cut holes in bound the holes
-// with the tools' tags (the objects' sub-shapes are numbered anew). A union of volumes makes
-// all its faces anew (the reference's fused solids share no face with their inputs).
-std::vector<TaggedShape> toolSubShapesKept(const OccShapes& shapes,
-                                           const std::vector<BooleanInput>& inputs,
-                                           std::size_t objectCount, const TopoDS_Shape& result,
-                                           SolidModeling::BooleanOperation op) {
+// Whether every image of the tool in the result is an image of an object too: the tool left no
+// piece of its own (a cut's tool, which leaves none; an intersection's; a union's merged into
+// the objects).
+bool mergedIntoObjects(const BooleanInput& tool, const std::vector<BooleanInput>& inputs,
+                       std::size_t objectCount) {
+  TopTools_IndexedMapOfShape objectImages;
+  for (std::size_t i = 0; i < objectCount; ++i) {
+    if (inputs[i].unchanged()) objectImages.Add(inputs[i].shape);
+    for (const TopoDS_Shape& image : inputs[i].modified) objectImages.Add(image);
+  }
+  return std::all_of(tool.modified.begin(), tool.modified.end(),
+                     [&](const TopoDS_Shape& image) { return objectImages.Contains(image); });
+}
+
+// The tools' boundaries that keep their tags, as in the reference. A tool given with Delete,
+// changed by the operation and leaving no piece of its own keeps the tags of its faces (a
+// solid's), curves (a surface's) or points (a curve's) that the result holds as they were, with
+// those of their curves and points (a sphere's pole curves too): the faces of a cavity are the
+// faces of the tool that made it. Everything else of the deleted inputs is numbered anew: the
+// objects' sub-shapes, even those kept as they were; a tool's curve or point kept while its
+// faces were cut; all of a tool that left a piece of its own. Fragments have no tools (every
+// input is an argument alike), and a union of volumes makes all its faces anew.
+std::vector<TaggedShape> toolBoundariesKept(const OccShapes& shapes,
+                                            const std::vector<BooleanInput>& inputs,
+                                            std::size_t objectCount, const TopoDS_Shape& result,
+                                            SolidModeling::BooleanOperation op) {
+  using Op = SolidModeling::BooleanOperation;
   std::vector<TaggedShape> out;
-  for (int dim = 2; dim >= 1; --dim) {  // points are numbered anew
+  if (op == Op::Fragments) return out;
+  for (std::size_t i = objectCount; i < inputs.size(); ++i) {
+    const BooleanInput& in = inputs[i];
+    if (!in.remove || in.unchanged() || in.id.dim == 0 || (op == Op::Union && in.id.dim == 3) ||
+        !mergedIntoObjects(in, inputs, objectCount))
+      continue;
+    const int dim = in.id.dim - 1;
     TopTools_IndexedMapOfShape inResult;
     TopExp::MapShapes(result, kTypes[dim], inResult);
-    for (std::size_t i = objectCount; i < inputs.size(); ++i) {
-      const BooleanInput& in = inputs[i];
-      if (!in.remove || in.unchanged() || dim >= in.id.dim) continue;
-      if (op == SolidModeling::BooleanOperation::Union && in.id.dim == 3) continue;
-      for (TopExp_Explorer it(in.shape, kTypes[dim]); it.More(); it.Next()) {
-        // The degenerate curve at a sphere's or a cone's pole is numbered anew.
-        const bool degenerate =
-            dim == 1 && BRep_Tool::Degenerated(TopoDS::Edge(it.Current()));
-        if (!degenerate && inResult.Contains(it.Current()) && shapes.isBound(dim, it.Current()))
-          out.push_back({dim, shapes.tagOf(dim, it.Current()), it.Current()});
-      }
+    for (TopExp_Explorer it(in.shape, kTypes[dim]); it.More(); it.Next()) {
+      if (!inResult.Contains(it.Current())) continue;
+      for (int sub = dim; sub >= 0; --sub)
+        for (TopExp_Explorer part(it.Current(), kTypes[sub]); part.More(); part.Next())
+          if (shapes.isBound(sub, part.Current()))
+            out.push_back({sub, shapes.tagOf(sub, part.Current()), part.Current()});
     }
   }
   return out;
 }
 
-// The inputs that were deleted and not kept as they were, with the entities now in their place.
+// The inputs that were deleted and are not where they were, with the entities now in their
+// place: those the operation changed, and, renumbered, those it kept as they were too.
 std::vector<SolidModeling::Replacement> replacementsOf(const OccShapes& shapes,
-                                                       const std::vector<BooleanInput>& inputs) {
+                                                       const std::vector<BooleanInput>& inputs,
+                                                       bool renumbered) {
   std::vector<SolidModeling::Replacement> out;
   for (const BooleanInput& in : inputs) {
-    if (!in.remove || in.unchanged()) continue;
+    if (!in.remove || (in.unchanged() && !renumbered)) continue;
     SolidModeling::Replacement r{in.id, {}};
+    TopTools_ListOfShape images = in.modified;
+    if (in.unchanged()) images.Append(in.shape);
     if (!in.deleted)
-      for (const TopoDS_Shape& image : in.modified) {
+      for (const TopoDS_Shape& image : images) {
         const int dim = shapeDimension(image);
         if (dim < 0 || !shapes.isBound(dim, image)) continue;
         const EntityId e{dim, shapes.tagOf(dim, image)};
@@ -283,6 +315,95 @@ std::vector<SolidModeling::Replacement> replacementsOf(const OccShapes& shapes,
       }
     out.push_back(std::move(r));
   }
+  return out;
+}
+
+// Binds the result as the reference binds a shape it makes anew: its solids, then its other
+// faces, edges and vertices, each under a new tag unless bound already, its sub-shapes depth
+// first. Lists the shapes that were not bound before and that the reference does not reach
+// through a shape listed before: it reaches the faces of a solid, the edges of a face and the
+// vertices of an edge, so a vertex inside a face or a solid, on no edge, is listed on its own.
+std::vector<EntityId> bindAnew(OccShapes& shapes, const TopoDS_Shape& result) {
+  TopTools_IndexedMapOfShape boundBefore[4], reached[4];
+  for (int dim = 0; dim <= 3; ++dim)
+    for (TopExp_Explorer it(result, kTypes[dim]); it.More(); it.Next())
+      if (shapes.isBound(dim, it.Current())) boundBefore[dim].Add(it.Current());
+  std::vector<EntityId> out;
+  for (int dim = 3; dim >= 0; --dim)
+    for (TopExp_Explorer it(result, kTypes[dim]); it.More(); it.Next()) {
+      const TopoDS_Shape& s = it.Current();
+      if (reached[dim].Contains(s)) continue;
+      const EntityId e{dim, shapes.bindNew(dim, s)};
+      if (!boundBefore[dim].Contains(s)) out.push_back(e);
+      reached[dim].Add(s);
+      for (int sub = dim - 1; sub >= 1; --sub) TopExp::MapShapes(s, kTypes[sub], reached[sub]);
+      for (TopExp_Explorer edge(s, TopAbs_EDGE); edge.More(); edge.Next())
+        TopExp::MapShapes(edge.Current(), TopAbs_VERTEX, reached[0]);
+    }
+  return out;
+}
+
+// The reference numbers the result without regard to the inputs when the result is given a
+// tag, or when Geometry.OCCBooleanPreserveNumbering is off: every deleted input goes, even one
+// the operation kept as it was, then the result is bound anew. Its sub-shapes that an entity
+// still bound holds keep their tags; the others take the next free ones, so the faces of a
+// box cut by a sphere that was deleted with it are 1..6 again, in the box's order. A tagged
+// result is the one shape of the result's highest dimension: shapes of lower dimensions beside
+// it are dropped.
+std::vector<EntityId> bindRenumbered(OccShapes& shapes, const std::vector<BooleanInput>& inputs,
+                                     const TopoDS_Shape& result, int tag, const std::string& name) {
+  int dim = 0;
+  const TopoDS_Shape tagged = tag >= 0 ? taggedShape(result, tag, name, dim) : TopoDS_Shape();
+  const auto deletedInput = [&](const EntityId& e) {
+    return std::any_of(inputs.begin(), inputs.end(),
+                       [&](const BooleanInput& in) { return in.remove && in.id == e; });
+  };
+  if (tag >= 0 && shapes.contains(dim, tag) && !deletedInput({dim, tag}))
+    throw GeometryError(name + " " + std::to_string(tag) + ": " + entityName(dim, tag) +
+                        " already exists");
+  for (const BooleanInput& in : inputs)
+    if (in.remove) shapes.unbind(in.id.dim, in.id.tag, true);
+  if (tag < 0) return bindAnew(shapes, result);
+  shapes.bindTree(dim, tag, tagged);
+  return {{dim, tag}};
+}
+
+// Geometry.OCCBooleanPreserveNumbering, without a tag for the result: inputs kept as they were
+// keep their tags, a deleted input turned into one shape passes its tag on, some tools'
+// boundaries kept as they were keep theirs (see toolBoundariesKept); the rest is numbered after.
+std::vector<EntityId> bindPreservingNumbering(OccShapes& shapes,
+                                              const std::vector<BooleanInput>& inputs,
+                                              std::size_t objectCount, const TopoDS_Shape& result,
+                                              SolidModeling::BooleanOperation op) {
+  // Deleted inputs go, unless the result holds them untouched; the tags of the tools'
+  // boundaries that keep theirs are noted first.
+  const std::vector<TaggedShape> kept = toolBoundariesKept(shapes, inputs, objectCount, result, op);
+  for (const BooleanInput& in : inputs)
+    if (in.remove && !in.unchanged()) shapes.unbind(in.id.dim, in.id.tag, true);
+  for (const TaggedShape& k : kept)
+    if (!shapes.isBound(k.dim, k.shape) && !shapes.contains(k.dim, k.tag))
+      shapes.bindShape(k.dim, k.tag, k.shape);
+  // A deleted input turned into a single shape of its dimension passes its tag on (to that
+  // shape alone: its sub-shapes are numbered after the rest of the result).
+  TopTools_IndexedMapOfShape passedOn;
+  for (const BooleanInput& in : inputs) {
+    if (!in.remove || in.deleted || in.modified.Extent() != 1) continue;
+    const TopoDS_Shape& image = in.modified.First();
+    if (shapeDimension(image) == in.id.dim && !shapes.isBound(in.id.dim, image) &&
+        !shapes.contains(in.id.dim, in.id.tag)) {
+      shapes.bindShape(in.id.dim, in.id.tag, image);
+      passedOn.Add(image);
+    }
+  }
+  const bool mixed = std::any_of(inputs.begin(), inputs.end(), [&](const BooleanInput& in) {
+    return in.id.dim != inputs.front().id.dim;
+  });
+  if (!mixed) return bindResult(shapes, result, passedOn);
+  const std::vector<std::pair<int, TopoDS_Shape>> listing = mixedListing(shapes, result, inputs);
+  bindResult(shapes, result, passedOn);
+  std::vector<EntityId> out;
+  for (const auto& [dim, shape] : listing)
+    if (shapes.isBound(dim, shape)) out.push_back({dim, shapes.tagOf(dim, shape)});
   return out;
 }
 
@@ -296,6 +417,11 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
   if (objects.empty()) throw GeometryError(name + ": no object to operate on");
   if (tools.empty() && op != BooleanOperation::Fragments)
     throw GeometryError(name + ": no tool to operate with");
+  // The reference refuses a tag in use in the first object's dimension before it operates,
+  // the tag of an input it would delete included.
+  if (tag >= 0 && shapes_->contains(objects.front().dim, tag))
+    throw GeometryError(name + " " + std::to_string(tag) + ": " +
+                        entityName(objects.front().dim, tag) + " already exists");
   std::vector<BooleanInput> inputs;
   auto add = [&](const EntityId& e, bool remove) {
     const EntityId id{e.dim, std::abs(e.tag)};
@@ -316,50 +442,11 @@ std::vector<EntityId> OccFactory::boolean(BooleanOperation op,
                                                                         : shape;
   });
 
-  int taggedDim = 0;
-  const TopoDS_Shape tagged =
-      tag >= 0 ? taggedShape(result, tag, name, taggedDim) : TopoDS_Shape();
-
-  // Deleted inputs go, unless the result holds them untouched; the tags of the tools'
-  // sub-shapes that the result keeps as they were are noted first (see toolSubShapesKept).
-  const std::vector<TaggedShape> kept =
-      booleanOptions_.preserveNumbering
-          ? toolSubShapesKept(*shapes_, inputs, objects.size(), result, op)
-          : std::vector<TaggedShape>{};
-  for (const BooleanInput& in : inputs)
-    if (in.remove && !in.unchanged()) shapes_->unbind(in.id.dim, in.id.tag, true);
-  for (const TaggedShape& k : kept)
-    if (!shapes_->isBound(k.dim, k.shape) && !shapes_->contains(k.dim, k.tag))
-      shapes_->bindShape(k.dim, k.tag, k.shape);
-  // A tag given to the result goes to its shape before any other.
-  if (tag >= 0 && !shapes_->isBound(taggedDim, tagged)) {
-    if (shapes_->contains(taggedDim, tag))
-      throw GeometryError(name + " " + std::to_string(tag) + ": " + entityName(taggedDim, tag) +
-                          " already exists");
-    shapes_->bindShape(taggedDim, tag, tagged);
-  }
-  // A deleted input turned into a single shape of its dimension passes its tag on (to that
-  // shape alone: its sub-shapes are numbered with the rest of the result).
-  for (const BooleanInput& in : inputs) {
-    if (!booleanOptions_.preserveNumbering) break;
-    if (!in.remove || in.deleted || in.modified.Extent() != 1) continue;
-    const TopoDS_Shape& image = in.modified.First();
-    if (shapeDimension(image) == in.id.dim && !shapes_->isBound(in.id.dim, image) &&
-        !shapes_->contains(in.id.dim, in.id.tag))
-      shapes_->bindShape(in.id.dim, in.id.tag, image);
-  }
-  const bool mixed = std::any_of(inputs.begin(), inputs.end(), [&](const BooleanInput& in) {
-    return in.id.dim != inputs.front().id.dim;
-  });
-  std::vector<std::pair<int, TopoDS_Shape>> listing;
-  if (mixed) listing = mixedListing(*shapes_, result, inputs);
-  std::vector<EntityId> out = bindResult(*shapes_, result);
-  if (mixed) {
-    out.clear();
-    for (const auto& [dim, shape] : listing)
-      if (shapes_->isBound(dim, shape)) out.push_back({dim, shapes_->tagOf(dim, shape)});
-  }
-  replacements_ = replacementsOf(*shapes_, inputs);
+  const bool renumbered = tag >= 0 || !booleanOptions_.preserveNumbering;
+  std::vector<EntityId> out =
+      renumbered ? bindRenumbered(*shapes_, inputs, result, tag, name)
+                 : bindPreservingNumbering(*shapes_, inputs, objects.size(), result, op);
+  replacements_ = replacementsOf(*shapes_, inputs, renumbered);
   return out;
 }
 

@@ -88,9 +88,13 @@ class OccFactory final : public GeometryFactory, public SolidModeling {
 
   // Booleans (kernel/occ/occ_booleans.cpp) on (dim, tag) shapes of any dimension. The result
   // lists the entities of the result, in OpenCASCADE's order; tags follow Gmsh: an input left
-  // untouched keeps its tags; a deleted input turned into one shape gives it its tag; the
-  // other shapes of the result get new tags. Deleted inputs go, with their sub-shapes that
-  // nothing else uses.
+  // untouched keeps its tags; a deleted input turned into one shape gives it its tag; a
+  // deleted tool of a cut, an intersection or a union that left no piece of its own keeps the
+  // tags of its faces (or curves) kept whole; the other shapes of the result get new tags,
+  // those of the shapes that took an input's tag last. Deleted inputs go, with their
+  // sub-shapes that nothing else uses. With tag >= 0 (or Geometry.OCCBooleanPreserveNumbering
+  // off) the result is numbered anew: every deleted input goes, then the result is bound like
+  // a new shape (its one entity of the highest dimension under `tag`).
   std::vector<EntityId> boolean(BooleanOperation operation, const std::vector<EntityId>& objects,
                                 const std::vector<EntityId>& tools, bool deleteObjects,
                                 bool deleteTools, int tag = -1) override;
