@@ -202,15 +202,35 @@ void exportSurfaces(const OccShapes& s, const Extrusions& extrusions, Model& mod
   }
 }
 
+// Faces and edges a solid holds inside it (a face or a curve fragmented with it: the solid
+// keeps them as internal parts): the mesh conforms to them, as to embedded entities.
+void internalFacesAndEdges(const OccShapes& s, const TopoDS_Shape& solid, ModelVolume& volume) {
+  auto add = [](std::vector<int>& tags, int tag) {
+    if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+  };
+  for (TopExp_Explorer face(solid, TopAbs_FACE); face.More(); face.Next())
+    if (face.Current().Orientation() == TopAbs_INTERNAL && s.isBound(2, face.Current()))
+      add(volume.embeddedSurfaces, s.tagOf(2, face.Current()));
+  for (TopoDS_Iterator part(solid); part.More(); part.Next()) {
+    if (part.Value().ShapeType() != TopAbs_WIRE && part.Value().ShapeType() != TopAbs_EDGE)
+      continue;
+    for (TopExp_Explorer edge(part.Value(), TopAbs_EDGE); edge.More(); edge.Next())
+      if (s.isBound(1, edge.Current())) add(volume.embeddedCurves, s.tagOf(1, edge.Current()));
+  }
+}
+
 void exportVolumes(const OccShapes& s, const Extrusions& extrusions, Model& model) {
   for (const auto& [tag, shape] : s.byTag[3]) {
     ModelVolume volume{tag, {}, extrusionOf(extrusions, {3, tag})};
     for (TopExp_Explorer shell(shape, TopAbs_SHELL); shell.More(); shell.Next()) {
-      volume.shells.emplace_back();
+      std::vector<int> faces;
       for (TopExp_Explorer face(shell.Current(), TopAbs_FACE); face.More(); face.Next())
-        volume.shells.back().push_back(signedTag(s.tagOf(2, face.Current()), face.Current()));
+        if (face.Current().Orientation() != TopAbs_INTERNAL)
+          faces.push_back(signedTag(s.tagOf(2, face.Current()), face.Current()));
+      if (!faces.empty()) volume.shells.push_back(std::move(faces));
     }
     volume.embeddedPoints = internalPoints(s, shape);
+    internalFacesAndEdges(s, shape, volume);
     model.addVolume(std::move(volume));
   }
 }

@@ -11,6 +11,7 @@
 
 #include "mesh/checks/high_order_check.h"
 #include "mesh/structured/periodic.h"
+#include "mesh/volumes/embedded_conformity.h"
 
 namespace geomesh {
 namespace {
@@ -359,8 +360,21 @@ class Checker {
           if (!positiveCorners(block.type, block.element(e)) && reported++ < kMaxProblemsPerCheck)
             problem(id, std::string(elementName(block.type)) + " " + std::to_string(e + 1) +
                             " has a non-positive Jacobian");
-      if (const ModelVolume* volume = model_.volume(id.tag)) checkVolumeFaces(*volume, em);
+      if (const ModelVolume* volume = model_.volume(id.tag)) {
+        checkVolumeFaces(*volume, em);
+        checkEmbedded(*volume, em);
+      }
     }
+  }
+
+  // The entities embedded in a volume of tetrahedra are meshed into them: their triangles are
+  // faces of two tetrahedra (one each side), their segments edges and their points nodes.
+  void checkEmbedded(const ModelVolume& volume, const EntityMesh& em) {
+    const ElementBlock* tets = em.findBlock(ElementType::Tet4);
+    if (!tets || em.blocks.size() != 1) return;
+    for (std::string& defect :
+         embeddedConformityDefects(volume, mesh_, *tets, kMaxProblemsPerCheck))
+      problem({3, volume.tag}, std::move(defect));
   }
 
   // The Jacobian at every corner: the triple product of the corner's three edges, taken in

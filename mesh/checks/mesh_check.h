@@ -34,6 +34,9 @@ struct MeshCheckReport {
 //    corner; in volumes with any but tetrahedra, each element face shared by two elements or
 //    equal to a triangle or quadrangle of a boundary surface, and each of those a face of an
 //    element (without known boundary surfaces, as read from MSH 2.2: by one or two elements);
+//  - entities embedded in a volume: each triangle of an embedded surface a face of two
+//    tetrahedra on opposite sides, each segment of an embedded curve an edge of a tetrahedron,
+//    each embedded point a node of one;
 //  - periodic entities: each node paired with a master node is that node's affine image;
 //  - high-order elements: every check above on their corners (the first vertexCount nodes), the
 //    other nodes held like any node; elements sharing an edge have the same nodes inside it.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -14,12 +15,23 @@ namespace geomesh {
 
 namespace {
 
-using Tet = std::array<int, 4>;  // local node indices, positively oriented
+using Tet = std::array<int, 4>;   // local node indices, positively oriented
+using Face = std::array<int, 3>;  // local node indices, sorted
 
 constexpr int kPasses = 8;
 constexpr std::size_t kMaxRing = 9;  // larger rings around an edge are rare and rarely improve
 constexpr int kSmoothingSteps = 6;
 constexpr double kGain = 1e-6;  // smallest quality gain worth a change: no cycling on noise
+
+std::uint64_t edgeKey(int a, int b) {
+  return std::uint64_t(std::min(a, b)) << 32 | std::uint32_t(std::max(a, b));
+}
+
+Face faceKey(int a, int b, int c) {
+  Face f{a, b, c};
+  std::sort(f.begin(), f.end());
+  return f;
+}
 
 // Quality of a tetrahedron, -1 when it is flat or inverted (exact orientation test).
 double quality(const std::vector<Vec3>& xyz, const Tet& t) {
@@ -30,11 +42,12 @@ double quality(const std::vector<Vec3>& xyz, const Tet& t) {
 
 // A tetrahedral mesh being modified in place: dead tetrahedra stay as holes in the arrays, and
 // each node knows the tetrahedra around it, which is all the adjacency the local operations
-// need (a face's neighbour is found among the tetrahedra of one of its nodes).
+// need (a face's neighbour is found among the tetrahedra of one of its nodes). The kept faces
+// and edges (sorted) are never flipped away.
 class TetOptimizer {
  public:
   TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable, const std::vector<Tet>& tets,
-               double threshold);
+               double threshold, std::vector<Face> keptFaces, std::vector<std::uint64_t> keptEdges);
   TetOptimizerStats run();
   std::vector<Tet> tetrahedra() const;
 
@@ -54,12 +67,20 @@ class TetOptimizer {
   std::vector<char> alive_;
   std::vector<std::vector<int>> around_;  // per node, its alive tetrahedra
   double threshold_;
+  std::vector<Face> keptFaces_;
+  std::vector<std::uint64_t> keptEdges_;
   TetOptimizerStats stats_;
 };
 
 TetOptimizer::TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable,
-                           const std::vector<Tet>& tets, double threshold)
-    : xyz_(xyz), movable_(std::move(movable)), around_(xyz.size()), threshold_(threshold) {
+                           const std::vector<Tet>& tets, double threshold,
+                           std::vector<Face> keptFaces, std::vector<std::uint64_t> keptEdges)
+    : xyz_(xyz),
+      movable_(std::move(movable)),
+      around_(xyz.size()),
+      threshold_(threshold),
+      keptFaces_(std::move(keptFaces)),
+      keptEdges_(std::move(keptEdges)) {
   for (const Tet& t : tets) addTet(t);
 }
 
@@ -147,7 +168,9 @@ std::pair<double, std::vector<Tet>> triangulateRing(const std::vector<Vec3>& xyz
   return {best[n - 1], std::move(tets)};
 }
 
+// Removing edge ab only takes out the faces around it: a kept face has kept edges.
 bool TetOptimizer::removeEdge(int a, int b) {
+  if (std::binary_search(keptEdges_.begin(), keptEdges_.end(), edgeKey(a, b))) return false;
   std::vector<int> shared;
   for (int t : around_[a])
     if (std::find(tets_[t].begin(), tets_[t].end(), b) != tets_[t].end()) shared.push_back(t);
@@ -172,6 +195,7 @@ bool TetOptimizer::swapFace(int t, int k) {
   int p = tet[(k + 1) % 4], q = tet[(k + 2) % 4], r = tet[(k + 3) % 4];
   const int d = tet[k];
   if (orient3d(xyz_[p], xyz_[q], xyz_[r], xyz_[d]) < 0) std::swap(p, q);
+  if (std::binary_search(keptFaces_.begin(), keptFaces_.end(), faceKey(p, q, r))) return false;
   int other = -1;
   for (int u : around_[p]) {
     const Tet& s = tets_[u];
@@ -303,7 +327,8 @@ TetOptimizerStats TetOptimizer::run() {
 
 }  // namespace
 
-TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double threshold) {
+TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double threshold,
+                                     const KeptInside& kept) {
   EntityMesh& em = mesh.entity(volume);
   ElementBlock* block = nullptr;
   for (ElementBlock& b : em.blocks)
@@ -326,7 +351,25 @@ TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double thresho
   std::vector<char> movable(global.size(), 0);
   for (NodeIndex n : em.nodes)
     if (auto it = local.find(n); it != local.end()) movable[it->second] = 1;
-  TetOptimizer optimizer(xyz, std::move(movable), tets, threshold);
+  // Kept faces and edges with a node outside the tetrahedra are not among theirs anyway.
+  auto at = [&](NodeIndex n) {
+    const auto it = local.find(n);
+    return it == local.end() ? -1 : it->second;
+  };
+  std::vector<Face> keptFaces;
+  std::vector<std::uint64_t> keptEdges;
+  for (const auto& t : kept.triangles) {
+    const int a = at(t[0]), b = at(t[1]), c = at(t[2]);
+    if (a < 0 || b < 0 || c < 0) continue;
+    keptFaces.push_back(faceKey(a, b, c));
+    keptEdges.insert(keptEdges.end(), {edgeKey(a, b), edgeKey(b, c), edgeKey(c, a)});
+  }
+  for (const auto& s : kept.segments)
+    if (at(s[0]) >= 0 && at(s[1]) >= 0) keptEdges.push_back(edgeKey(at(s[0]), at(s[1])));
+  std::sort(keptFaces.begin(), keptFaces.end());
+  std::sort(keptEdges.begin(), keptEdges.end());
+  TetOptimizer optimizer(xyz, std::move(movable), tets, threshold, std::move(keptFaces),
+                         std::move(keptEdges));
   const TetOptimizerStats stats = optimizer.run();
   block->nodes.clear();
   for (const Tet& t : optimizer.tetrahedra())

@@ -1,4 +1,4 @@
-// meshVolume: boundary shells oriented, self-intersections rejected exactly, then TetGen.
+// meshVolume: shells oriented, the complex checked for intersections exactly, then TetGen.
 #include "mesh/volumes/volume_mesher.h"
 
 #include <tetgen.h>
@@ -6,67 +6,24 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <cstdlib>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "mesh/structured/extrusion_mesher.h"
 #include "mesh/core/mesh_error.h"
-#include "mesh/core/predicates.h"
 #include "mesh/volumes/abort_trap.h"
+#include "mesh/volumes/embedded_conformity.h"
+#include "mesh/volumes/plc_containment.h"
+#include "mesh/volumes/plc_intersections.h"
 #include "mesh/volumes/tet_optimizer.h"
+#include "mesh/volumes/volume_plc.h"
 
 namespace geomesh {
 
 namespace {
-
-using Triangle = std::array<int, 3>;  // local indices into BoundaryMesh::nodes
-
-// The closed triangulated boundary of a volume, with its own compact node numbering.
-struct BoundaryMesh {
-  std::vector<NodeIndex> nodes;       // local -> mesh node
-  std::vector<Triangle> triangles;
-  std::vector<std::size_t> shellStart;  // first triangle of each shell; outer shell first
-  std::vector<int> surfaceOf;           // per triangle
-};
-
-int localIndex(BoundaryMesh& b, std::unordered_map<NodeIndex, int>& local, NodeIndex n) {
-  auto [it, inserted] = local.try_emplace(n, static_cast<int>(b.nodes.size()));
-  if (inserted) b.nodes.push_back(n);
-  return it->second;
-}
-
-BoundaryMesh collectBoundary(const ModelVolume& volume, const Mesh& mesh) {
-  const EntityId id{3, volume.tag};
-  BoundaryMesh b;
-  std::unordered_map<NodeIndex, int> local;
-  for (const std::vector<int>& shell : volume.shells) {
-    b.shellStart.push_back(b.triangles.size());
-    for (int signedSurface : shell) {
-      const int s = std::abs(signedSurface);
-      const EntityMesh* em = mesh.find({2, s});
-      const ElementBlock* tris = em ? em->findBlock(ElementType::Triangle3) : nullptr;
-      if (!tris || tris->size() == 0)
-        throw MeshError(id, "surface " + std::to_string(s) + " has no triangle mesh");
-      if (em->elementCount() != tris->size())
-        throw MeshError(id, "surface " + std::to_string(s) +
-                                " has elements other than 3-node triangles");
-      for (std::size_t i = 0; i < tris->size(); ++i) {
-        const auto t = tris->element(i);
-        b.triangles.push_back(
-            {localIndex(b, local, t[0]), localIndex(b, local, t[1]), localIndex(b, local, t[2])});
-        b.surfaceOf.push_back(s);
-      }
-    }
-  }
-  if (b.triangles.size() < 4) throw MeshError(id, "its boundary has fewer than 4 triangles");
-  return b;
-}
 
 double signedTetVolume(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   return dot(cross(b - a, c - a), d - a) / 6;
@@ -74,7 +31,7 @@ double signedTetVolume(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 
 // Orients the triangles [first, last) consistently (each edge traversed once each way), by a
 // walk across shared edges, then outward (positive enclosed volume).
-void orientShell(std::vector<Triangle>& tris, std::size_t first, std::size_t last,
+void orientShell(std::vector<PlcTriangle>& tris, std::size_t first, std::size_t last,
                  const std::vector<Vec3>& xyz) {
   std::map<std::pair<int, int>, std::vector<std::size_t>> byEdge;
   for (std::size_t t = first; t < last; ++t)
@@ -117,7 +74,7 @@ void orientShell(std::vector<Triangle>& tris, std::size_t first, std::size_t las
 
 // A point inside an inner shell (a hole of the volume), just behind its largest triangle: the
 // shell must be oriented outward.
-Vec3 pointInsideShell(const std::vector<Triangle>& tris, std::size_t first, std::size_t last,
+Vec3 pointInsideShell(const std::vector<PlcTriangle>& tris, std::size_t first, std::size_t last,
                       const std::vector<Vec3>& xyz) {
   std::size_t best = first;
   double bestArea = -1;
@@ -134,235 +91,14 @@ Vec3 pointInsideShell(const std::vector<Triangle>& tris, std::size_t first, std:
   return (a + b + c) / 3 - 1e-3 * std::sqrt(bestArea) * normal;
 }
 
-// TetGen adds nodes until no edge is much longer than the size asked for; a Delaunay mesh
-// whose nodes lie a size apart, as the reference makes, has longer edges on average. The
-// sizes given to TetGen are scaled by this factor, which brings the node counts to the
-// reference's (within 10% on boxes, spheres, lofts, CAD parts and size fields).
-constexpr double kTetgenSizeScale = 1.15;
-
-// Target size at each boundary node (as TetGen reads it: see kTetgenSizeScale): the mean
-// length of its boundary edges, within the allowed range.
-std::vector<double> boundaryNodeSizes(const BoundaryMesh& b, const std::vector<Vec3>& xyz,
-                                      const MeshOptions& options) {
-  std::vector<double> sum(b.nodes.size(), 0);
-  std::vector<int> count(b.nodes.size(), 0);
-  for (const Triangle& t : b.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const int p = t[k], q = t[(k + 1) % 3];
-      const double length = distance(xyz[p], xyz[q]);
-      sum[p] += length;
-      sum[q] += length;
-      ++count[p];
-      ++count[q];
-    }
-  std::vector<double> size(b.nodes.size());
-  for (std::size_t i = 0; i < size.size(); ++i)
-    size[i] = kTetgenSizeScale *
-              std::clamp(sum[i] / std::max(count[i], 1), options.sizeMin, options.sizeMax);
-  return size;
-}
-
-// --- Boundary self-intersections -------------------------------------------------------------
-// TetGen 1.5 crashes (it releases its memory twice) when it gives up on an input, typically a
-// boundary whose triangles cross each other, so such boundaries are detected first, exactly:
-// two triangles may only share the vertices or the edge they have in common.
-
-// Orientations within one plane: drops the coordinate along which the plane's normal is
-// largest; for points of that plane the 2D signs are exact (up to one common sign).
-struct PlaneProjection {
-  int axis;
-  explicit PlaneProjection(const Vec3 t[3]) {
-    const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
-    const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
-    axis = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
-  }
-  Vec2 operator()(Vec3 p) const {
-    return axis == 0 ? Vec2{p.y, p.z} : (axis == 1 ? Vec2{p.z, p.x} : Vec2{p.x, p.y});
-  }
-};
-
-bool onSegment2d(Vec2 p, Vec2 a, Vec2 b) {  // p collinear with a, b
-  return std::min(a.u, b.u) <= p.u && p.u <= std::max(a.u, b.u) && std::min(a.v, b.v) <= p.v &&
-         p.v <= std::max(a.v, b.v);
-}
-
-bool segmentsMeet2d(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
-  const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return (o1 == 0 && onSegment2d(c, a, b)) || (o2 == 0 && onSegment2d(d, a, b)) ||
-         (o3 == 0 && onSegment2d(a, c, d)) || (o4 == 0 && onSegment2d(b, c, d));
-}
-
-bool insideTriangle2d(Vec2 p, const Vec2 t[3]) {
-  const int o = orient2d(t[0], t[1], t[2]);
-  for (int k = 0; k < 3; ++k)
-    if (orient2d(t[k], t[(k + 1) % 3], p) * o < 0) return false;
-  return true;
-}
-
-// Whether the closed segment [a, b] meets the closed triangle t.
-bool segmentMeetsTriangle(Vec3 a, Vec3 b, const Vec3 t[3]) {
-  const int sa = orient3d(t[0], t[1], t[2], a), sb = orient3d(t[0], t[1], t[2], b);
-  if (sa == sb && sa != 0) return false;
-  if (sa == 0 && sb == 0) {
-    const PlaneProjection flat(t);
-    const Vec2 t2[3] = {flat(t[0]), flat(t[1]), flat(t[2])};
-    const Vec2 a2 = flat(a), b2 = flat(b);
-    if (insideTriangle2d(a2, t2) || insideTriangle2d(b2, t2)) return true;
-    for (int k = 0; k < 3; ++k)
-      if (segmentsMeet2d(a2, b2, t2[k], t2[(k + 1) % 3])) return true;
-    return false;
-  }
-  const int o0 = orient3d(a, b, t[0], t[1]), o1 = orient3d(a, b, t[1], t[2]);
-  const int o2 = orient3d(a, b, t[2], t[0]);
-  return (o0 >= 0 && o1 >= 0 && o2 >= 0) || (o0 <= 0 && o1 <= 0 && o2 <= 0);
-}
-
-// Whether the segment from t[0] towards x runs inside the closed corner of triangle t at t[0].
-bool insideCorner(Vec3 x, const Vec3 t[3]) {
-  if (orient3d(t[0], t[1], t[2], x) != 0) return false;
-  const PlaneProjection flat(t);
-  const Vec2 v = flat(t[0]), c = flat(t[1]), d = flat(t[2]), p = flat(x);
-  const int o = orient2d(v, c, d);
-  return orient2d(v, c, p) * o >= 0 && orient2d(v, p, d) * o >= 0;
-}
-
-// Rotates triangle t so that its corners shared with u come first; returns how many there are.
-int shareCorners(Triangle& t, const Triangle& u) {
-  auto shared = [&](int i) { return std::find(u.begin(), u.end(), i) != u.end(); };
-  std::stable_partition(t.begin(), t.end(), shared);
-  return static_cast<int>(std::count_if(t.begin(), t.end(), shared));
-}
-
-bool trianglesCross(Triangle i, Triangle j, const std::vector<Vec3>& xyz) {
-  const int shared = shareCorners(i, j);
-  shareCorners(j, i);
-  const Vec3 p[3] = {xyz[i[0]], xyz[i[1]], xyz[i[2]]};
-  const Vec3 q[3] = {xyz[j[0]], xyz[j[1]], xyz[j[2]]};
-  switch (shared) {
-    case 0:
-      for (int k = 0; k < 3; ++k)
-        if (segmentMeetsTriangle(p[k], p[(k + 1) % 3], q) ||
-            segmentMeetsTriangle(q[k], q[(k + 1) % 3], p))
-          return true;
-      return false;
-    case 1:  // p[0] == q[0]
-      return segmentMeetsTriangle(p[1], p[2], q) || segmentMeetsTriangle(q[1], q[2], p) ||
-             insideCorner(p[1], q) || insideCorner(p[2], q) || insideCorner(q[1], p) ||
-             insideCorner(q[2], p);
-    case 2: {  // a fold: both on the same side of their common edge, in one plane
-      if (orient3d(p[0], p[1], p[2], q[2]) != 0) return false;
-      const PlaneProjection flat(p);
-      return orient2d(flat(p[0]), flat(p[1]), flat(p[2])) *
-                 orient2d(flat(p[0]), flat(p[1]), flat(q[2])) >
-             0;
-    }
-    default: return true;  // the same triangle twice
-  }
-}
-
-// Candidate pairs come from a uniform grid of cells about the size of the triangles.
-class TriangleGrid {
- public:
-  TriangleGrid(const std::vector<Triangle>& tris, const std::vector<Vec3>& xyz);
-  template <class Visit>
-  void forCells(const BoundingBox& box, Visit visit) const;
-  const std::vector<std::uint32_t>* cell(std::size_t key) const;  // null when empty
-  BoundingBox boxOf(const Triangle& t) const;
-
- private:
-  std::array<std::size_t, 3> cellOf(Vec3 p) const;
-  const std::vector<Vec3>& xyz_;
-  BoundingBox all_;
-  double cellSize_ = 1;
-  std::array<std::size_t, 3> dims_{1, 1, 1};
-  std::unordered_map<std::size_t, std::vector<std::uint32_t>> cells_;
-};
-
-BoundingBox TriangleGrid::boxOf(const Triangle& t) const {
-  BoundingBox box;
-  for (int k : t) box.include(xyz_[k]);
-  return box;
-}
-
-TriangleGrid::TriangleGrid(const std::vector<Triangle>& tris, const std::vector<Vec3>& xyz)
-    : xyz_(xyz) {
-  double sum = 0;
-  for (const Triangle& t : tris) {
-    const BoundingBox box = boxOf(t);
-    all_.include(box);
-    sum += distance(box.min, box.max);
-  }
-  const Vec3 extent = all_.max - all_.min;
-  // About one triangle per cell, and no more cells than a few per triangle.
-  cellSize_ = std::max({sum / static_cast<double>(tris.size()), 1e-300,
-                        std::cbrt(extent.x * extent.y * extent.z / (4.0 * tris.size()))});
-  dims_ = {static_cast<std::size_t>(extent.x / cellSize_) + 1,
-           static_cast<std::size_t>(extent.y / cellSize_) + 1,
-           static_cast<std::size_t>(extent.z / cellSize_) + 1};
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    forCells(boxOf(tris[i]), [&](std::size_t key) {
-      cells_[key].push_back(static_cast<std::uint32_t>(i));
-    });
-}
-
-std::array<std::size_t, 3> TriangleGrid::cellOf(Vec3 p) const {
-  auto index = [&](double x, double lo, std::size_t n) {
-    return std::min(static_cast<std::size_t>(std::max(0.0, (x - lo) / cellSize_)), n - 1);
-  };
-  return {index(p.x, all_.min.x, dims_[0]), index(p.y, all_.min.y, dims_[1]),
-          index(p.z, all_.min.z, dims_[2])};
-}
-
-template <class Visit>
-void TriangleGrid::forCells(const BoundingBox& box, Visit visit) const {
-  const auto lo = cellOf(box.min), hi = cellOf(box.max);
-  for (std::size_t i = lo[0]; i <= hi[0]; ++i)
-    for (std::size_t j = lo[1]; j <= hi[1]; ++j)
-      for (std::size_t k = lo[2]; k <= hi[2]; ++k) visit((i * dims_[1] + j) * dims_[2] + k);
-}
-
-const std::vector<std::uint32_t>* TriangleGrid::cell(std::size_t key) const {
-  auto it = cells_.find(key);
-  return it == cells_.end() ? nullptr : &it->second;
-}
-
-bool boxesOverlap(const BoundingBox& a, const BoundingBox& b) {
-  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y &&
-         b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
-}
-
-void rejectSelfIntersections(const ModelVolume& volume, const BoundaryMesh& b,
-                             const std::vector<Vec3>& xyz) {
-  const TriangleGrid grid(b.triangles, xyz);
-  std::vector<std::size_t> lastVisit(b.triangles.size(), SIZE_MAX);
-  for (std::size_t i = 0; i < b.triangles.size(); ++i) {
-    const BoundingBox box = grid.boxOf(b.triangles[i]);
-    grid.forCells(box, [&](std::size_t key) {
-      const std::vector<std::uint32_t>* cell = grid.cell(key);
-      for (std::uint32_t j : cell ? *cell : std::vector<std::uint32_t>{}) {
-        if (j >= i || lastVisit[j] == i) continue;
-        lastVisit[j] = i;
-        if (!boxesOverlap(box, grid.boxOf(b.triangles[j])) ||
-            !trianglesCross(b.triangles[i], b.triangles[j], xyz))
-          continue;
-        const Vec3 at = xyz[b.triangles[i][0]];
-        throw MeshError({3, volume.tag},
-                        "its boundary intersects itself: a triangle of surface " +
-                            std::to_string(b.surfaceOf[i]) + " crosses one of surface " +
-                            std::to_string(b.surfaceOf[j]) + " near (" + std::to_string(at.x) +
-                            ", " + std::to_string(at.y) + ", " + std::to_string(at.z) + ")");
-      }
-    });
-  }
-}
-
-// TetGen's input, pointing into arrays owned here. tetgenio frees its arrays with delete[] on
-// destruction, so the borrowed pointers are cleared first.
+// TetGen's input, pointing into arrays owned here: the triangles as facets (those of embedded
+// surfaces are facets inside the domain), the segments of embedded curves as edges, which
+// TetGen keeps as segments with -p, and every node, isolated ones included, as a point.
+// tetgenio frees its arrays with delete[] on destruction, so the borrowed pointers are cleared
+// first.
 class TetgenInput {
  public:
-  TetgenInput(const BoundaryMesh& b, const std::vector<Vec3>& xyz, std::vector<double> sizes,
+  TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz, std::vector<double> sizes,
               const std::vector<Vec3>& holes);
   ~TetgenInput() { release(); }
   TetgenInput(const TetgenInput&) = delete;
@@ -373,21 +109,22 @@ class TetgenInput {
   void release();
 
   std::vector<double> points_, sizes_, holes_;
-  std::vector<int> corners_;
+  std::vector<int> corners_, edges_;
   std::vector<tetgenio::polygon> polygons_;
   std::vector<tetgenio::facet> facets_;
   tetgenio io_;
 };
 
-TetgenInput::TetgenInput(const BoundaryMesh& b, const std::vector<Vec3>& xyz,
+TetgenInput::TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz,
                          std::vector<double> sizes, const std::vector<Vec3>& holes)
     : sizes_(std::move(sizes)) {
   for (Vec3 p : xyz) points_.insert(points_.end(), {p.x, p.y, p.z});
   for (Vec3 h : holes) holes_.insert(holes_.end(), {h.x, h.y, h.z});
-  for (const Triangle& t : b.triangles) corners_.insert(corners_.end(), t.begin(), t.end());
-  polygons_.resize(b.triangles.size());
-  facets_.resize(b.triangles.size());
-  for (std::size_t i = 0; i < b.triangles.size(); ++i) {
+  for (const PlcTriangle& t : plc.triangles) corners_.insert(corners_.end(), t.begin(), t.end());
+  for (const PlcSegment& s : plc.segments) edges_.insert(edges_.end(), s.begin(), s.end());
+  polygons_.resize(plc.triangles.size());
+  facets_.resize(plc.triangles.size());
+  for (std::size_t i = 0; i < plc.triangles.size(); ++i) {
     polygons_[i] = {corners_.data() + 3 * i, 3};
     facets_[i] = {&polygons_[i], 1, nullptr, 0};
   }
@@ -400,6 +137,8 @@ TetgenInput::TetgenInput(const BoundaryMesh& b, const std::vector<Vec3>& xyz,
   io_.facetlist = facets_.data();
   io_.numberofholes = static_cast<int>(holes.size());
   io_.holelist = holes_.empty() ? nullptr : holes_.data();
+  io_.numberofedges = static_cast<int>(plc.segments.size());
+  io_.edgelist = edges_.empty() ? nullptr : edges_.data();
 }
 
 void TetgenInput::release() {
@@ -408,6 +147,8 @@ void TetgenInput::release() {
   io_.facetlist = nullptr;
   io_.numberoffacets = 0;
   io_.holelist = nullptr;
+  io_.edgelist = nullptr;
+  io_.numberofedges = 0;
 }
 
 std::string tetgenFailure(int code) {
@@ -437,30 +178,6 @@ bool tetrahedralizeBoundary(const ModelVolume& volume, TetgenInput& input, tetge
   } catch (int code) {
     throw MeshError({3, volume.tag}, tetgenFailure(code));
   }
-}
-
-// Renumbers the boundary's nodes by i -> i * stride mod n, with the stride the first integer
-// from `start` coprime with n, so that TetGen meets the points in another order.
-void renumber(BoundaryMesh& b, std::vector<Vec3>& xyz, std::vector<double>& sizes,
-              std::size_t start) {
-  const std::size_t n = b.nodes.size();
-  std::size_t stride = std::max<std::size_t>(start, 1);
-  while (std::gcd(stride, n) != 1) ++stride;
-  std::vector<int> to(n);
-  for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<int>(i * stride % n);
-  std::vector<NodeIndex> nodes(n);
-  std::vector<Vec3> places(n);
-  std::vector<double> targets(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    nodes[to[i]] = b.nodes[i];
-    places[to[i]] = xyz[i];
-    targets[to[i]] = sizes[i];
-  }
-  b.nodes = std::move(nodes);
-  xyz = std::move(places);
-  sizes = std::move(targets);
-  for (Triangle& t : b.triangles)
-    for (int& k : t) k = to[k];
 }
 
 // A background mesh for TetGen: the nodes and tetrahedra of a mesh it made, borrowed, with a
@@ -495,7 +212,7 @@ class TetgenBackground {
 // boundary size, or the size TetGen interpolated there, bounding it when sizes extend from the
 // boundary), until the node count settles (at most a few times).
 std::unique_ptr<tetgenio> followInteriorSize(const ModelVolume& volume, TetgenInput& input,
-                                             const std::vector<double>& boundarySizes,
+                                             const std::vector<double>& plcSizes,
                                              const InteriorSize& interiorSize,
                                              const MeshOptions& options,
                                              std::unique_ptr<tetgenio> mesh) {
@@ -505,13 +222,13 @@ std::unique_ptr<tetgenio> followInteriorSize(const ModelVolume& volume, TetgenIn
   for (int pass = 0; pass < kPasses; ++pass) {
     const int before = mesh->numberofpoints;
     std::vector<double> sizes(static_cast<std::size_t>(before));
-    // All sizes as TetGen reads them (see kTetgenSizeScale), as boundarySizes are.
+    // All sizes as TetGen reads them (see kTetgenSizeScale), as plcSizes are.
     for (int i = 0; i < before; ++i) {
       const double* p = mesh->pointlist + 3 * i;
       sizes[i] = kTetgenSizeScale * std::clamp(interiorSize({p[0], p[1], p[2]}) * factor,
                                                options.sizeMin, options.sizeMax);
-      if (i < static_cast<int>(boundarySizes.size()))
-        sizes[i] = std::min(sizes[i], boundarySizes[i]);
+      if (i < static_cast<int>(plcSizes.size()))
+        sizes[i] = std::min(sizes[i], plcSizes[i]);
       else if (options.sizeExtendFromBoundary && mesh->pointmtrlist)
         sizes[i] = std::min(sizes[i], mesh->pointmtrlist[i]);
     }
@@ -527,20 +244,20 @@ std::unique_ptr<tetgenio> followInteriorSize(const ModelVolume& volume, TetgenIn
 }
 
 // Adds TetGen's new points to the volume and its tetrahedra, positively oriented.
-void appendTetrahedra(const ModelVolume& volume, const BoundaryMesh& b, const tetgenio& out,
+void appendTetrahedra(const ModelVolume& volume, const VolumePlc& plc, const tetgenio& out,
                       Mesh& mesh) {
   const EntityId id{3, volume.tag};
-  if (out.numberofpoints < static_cast<int>(b.nodes.size()) || out.numberofcorners != 4 ||
+  if (out.numberofpoints < static_cast<int>(plc.nodes.size()) || out.numberofcorners != 4 ||
       out.numberoftetrahedra <= 0)
     throw MeshError(id, "TetGen returned no tetrahedra");
-  for (std::size_t i = 0; i < b.nodes.size(); ++i) {
+  for (std::size_t i = 0; i < plc.nodes.size(); ++i) {
     const double* p = out.pointlist + 3 * i;
-    if (!(Vec3{p[0], p[1], p[2]} == mesh.node(b.nodes[i])))
+    if (!(Vec3{p[0], p[1], p[2]} == mesh.node(plc.nodes[i])))
       throw MeshError(id, "TetGen moved a boundary node");
   }
   EntityMesh& em = mesh.entity(id);
-  std::vector<NodeIndex> global(b.nodes);
-  for (int i = static_cast<int>(b.nodes.size()); i < out.numberofpoints; ++i) {
+  std::vector<NodeIndex> global(plc.nodes);
+  for (int i = static_cast<int>(plc.nodes.size()); i < out.numberofpoints; ++i) {
     const double* p = out.pointlist + 3 * i;
     global.push_back(mesh.addNode({p[0], p[1], p[2]}));
     em.nodes.push_back(global.back());
@@ -555,6 +272,33 @@ void appendTetrahedra(const ModelVolume& volume, const BoundaryMesh& b, const te
   }
 }
 
+// With -Y, TetGen adds no node on the embedded entities; should it still leave one of their
+// triangles, segments or points out of the tetrahedra, the mesh is not made.
+void requireEmbeddedConformity(const ModelVolume& volume, const Mesh& mesh) {
+  if (volume.embeddedSurfaces.empty() && volume.embeddedCurves.empty() &&
+      volume.embeddedPoints.empty())
+    return;
+  const ElementBlock& tets = *mesh.find({3, volume.tag})->findBlock(ElementType::Tet4);
+  const std::vector<std::string> defects = embeddedConformityDefects(volume, mesh, tets, 1);
+  if (!defects.empty())
+    throw MeshError({3, volume.tag},
+                    "TetGen could not keep the mesh of an embedded entity without adding nodes "
+                    "on it: " +
+                        defects.front());
+}
+
+// The embedded surfaces' triangles and curves' segments, in mesh nodes.
+KeptInside keptInside(const VolumePlc& plc) {
+  KeptInside kept;
+  for (std::size_t t = plc.shellEnd; t < plc.triangles.size(); ++t) {
+    const PlcTriangle& c = plc.triangles[t];
+    kept.triangles.push_back({plc.nodes[c[0]], plc.nodes[c[1]], plc.nodes[c[2]]});
+  }
+  for (const PlcSegment& s : plc.segments)
+    kept.segments.push_back({plc.nodes[s[0]], plc.nodes[s[1]]});
+  return kept;
+}
+
 }  // namespace
 
 void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
@@ -562,30 +306,29 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
   const ModelVolume* volume = model.volume(volumeTag);
   if (!volume) throw MeshError({3, volumeTag}, "the volume does not exist");
   if (isLayeredExtrusion(*volume)) return;  // structured: meshed by ExtrusionMesher
-  BoundaryMesh boundary = collectBoundary(*volume, mesh);
+  VolumePlc plc = collectVolumePlc(model, *volume, mesh);
   std::vector<Vec3> xyz;
-  for (NodeIndex n : boundary.nodes) xyz.push_back(mesh.node(n));
-  rejectSelfIntersections(*volume, boundary, xyz);
+  for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
+  rejectIntersections(*volume, plc, xyz);
+  rejectEmbeddedOutside(*volume, plc, xyz);
   std::vector<Vec3> holes;
-  for (std::size_t s = 1; s < boundary.shellStart.size(); ++s) {
-    const std::size_t last =
-        s + 1 < boundary.shellStart.size() ? boundary.shellStart[s + 1] : boundary.triangles.size();
-    if (last == boundary.shellStart[s]) continue;  // an empty shell
-    orientShell(boundary.triangles, boundary.shellStart[s], last, xyz);
-    holes.push_back(pointInsideShell(boundary.triangles, boundary.shellStart[s], last, xyz));
+  for (std::size_t s = 1; s < plc.shellStart.size(); ++s) {
+    const std::size_t first = plc.shellStart[s], last = plc.shellEndOf(s);
+    if (last == first) continue;  // an empty shell
+    orientShell(plc.triangles, first, last, xyz);
+    holes.push_back(pointInsideShell(plc.triangles, first, last, xyz));
   }
-  std::vector<double> boundarySizes = boundaryNodeSizes(boundary, xyz, options);
+  std::vector<double> plcSizes = plcNodeSizes(plc, xyz, options);
   constexpr int kOrders = 3;
   for (int attempt = 0;; ++attempt) {
-    if (attempt > 0)
-      renumber(boundary, xyz, boundarySizes, boundary.nodes.size() / (attempt + 1) + 1);
-    TetgenInput input(boundary, xyz, boundarySizes, holes);
+    if (attempt > 0) renumberPlc(plc, xyz, plcSizes, plc.nodes.size() / (attempt + 1) + 1);
+    TetgenInput input(plc, xyz, plcSizes, holes);
     auto output = std::make_unique<tetgenio>();
     if (tetrahedralizeBoundary(*volume, input, *output, nullptr)) {
       if (interiorSize)
-        output = followInteriorSize(*volume, input, boundarySizes, interiorSize, options,
-                                    std::move(output));
-      appendTetrahedra(*volume, boundary, *output, mesh);
+        output =
+            followInteriorSize(*volume, input, plcSizes, interiorSize, options, std::move(output));
+      appendTetrahedra(*volume, plc, *output, mesh);
       break;
     }
     if (attempt + 1 == kOrders)
@@ -593,7 +336,9 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
                                           std::to_string(kOrders) +
                                           " orders of its nodes (a degenerate configuration)");
   }
-  if (options.optimize) optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold);
+  requireEmbeddedConformity(*volume, mesh);
+  if (options.optimize)
+    optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold, keptInside(plc));
 }
 
 }  // namespace geomesh
