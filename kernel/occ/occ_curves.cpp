@@ -2,6 +2,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <ElCLib.hxx>
@@ -17,6 +18,7 @@
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
@@ -24,6 +26,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "kernel/geometry_error.h"
 #include "kernel/occ/occ_factory.h"
@@ -101,11 +104,17 @@ void OccFactory::addCircleArc(int tag, int startPoint, int centerPoint, int endP
     normal = {0, 0, -1};
   }
   const TopoDS_Shape edge = guarded(what, [&] {
-    const gp_Ax2 axis(toPnt(c), gp_Dir(normal.x, normal.y, normal.z), gp_Dir(u.x, u.y, u.z));
-    Handle(Geom_Circle) circle = new Geom_Circle(axis, radius);
-    const double angle = std::atan2(norm(cross(u, v)), dot(u, v));  // pi for a half circle
-    Handle(Geom_TrimmedCurve) arc = new Geom_TrimmedCurve(circle, 0, angle);
-    return edgeBetween(arc, a, b, what);
+    // Parametrized as in the reference: the circle's x axis opposite to the one OpenCASCADE
+    // picks for the normal, the arc from its start's angle. A filling samples its loop at
+    // parameters, and the way its plate faces (so the order in which its curves are listed)
+    // can hang on the rounding of those samples.
+    const gp_Dir axisNormal(normal.x, normal.y, normal.z);
+    const gp_Dir xAxis = gp_Ax2(toPnt(c), axisNormal).XDirection().Reversed();
+    Handle(Geom_Circle) circle = new Geom_Circle(gp_Ax2(toPnt(c), axisNormal, xAxis), radius);
+    const double first = ElCLib::Parameter(circle->Circ(), toPnt(c + u));
+    double last = ElCLib::Parameter(circle->Circ(), toPnt(c + v));
+    while (last <= first) last += 2 * std::numbers::pi;
+    return edgeBetween(new Geom_TrimmedCurve(circle, first, last), a, b, what);
   });
   shapes_->bindTree(1, tag, edge);
 }
@@ -310,8 +319,27 @@ void OccFactory::addBezier(int tag, const std::vector<int>& points) {
   shapes_->bindTree(1, tag, edge);
 }
 
-// Curves in any order and orientation; OpenCASCADE chains them. A loop that does not close is
-// refused.
+namespace {
+
+// The wire run the other way: its edges stored last to first, each turned. Reversing only the
+// wire's orientation would leave its edges stored from the first, which is where the listing
+// of a face's loop starts.
+TopoDS_Wire reversedAsAWhole(const TopoDS_Wire& wire) {
+  std::vector<TopoDS_Shape> edges;
+  for (TopoDS_Iterator it(wire, false, false); it.More(); it.Next()) edges.push_back(it.Value());
+  BRep_Builder builder;
+  TopoDS_Wire reversed;
+  builder.MakeWire(reversed);
+  for (auto it = edges.rbegin(); it != edges.rend(); ++it) builder.Add(reversed, it->Reversed());
+  reversed.Closed(wire.Closed());
+  return TopoDS::Wire(reversed.Oriented(wire.Orientation()));
+}
+
+}  // namespace
+
+// Curves in any order and orientation; OpenCASCADE chains them into a loop that runs the way
+// its first curve goes. A negative first curve turns it round, as in the reference, where a
+// plane surface bounded by it then faces the other way. A loop that does not close is refused.
 void OccFactory::addCurveLoop(int tag, std::vector<int> curves) { addChain(tag, curves, true); }
 
 void OccFactory::addChain(int tag, const std::vector<int>& curves, bool closed) {
@@ -330,7 +358,7 @@ void OccFactory::addChain(int tag, const std::vector<int>& curves, bool closed) 
     return maker.Wire();
   });
   if (closed && !BRep_Tool::IsClosed(wire)) throw GeometryError(what + " is not closed");
-  shapes_->wires[tag] = wire;
+  shapes_->wires[tag] = closed && curves.front() < 0 ? reversedAsAWhole(wire) : wire;
 }
 
 }  // namespace geomesh

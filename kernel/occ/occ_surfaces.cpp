@@ -1,4 +1,5 @@
 // The OpenCASCADE factory's surfaces, surface loops and volumes built from their boundaries.
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -6,14 +7,18 @@
 #include <BRep_Builder.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomConvert.hxx>
 #include <GeomFill_BSplineCurves.hxx>
+#include <GeomPlate_BuildAveragePlane.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_Plane.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Geom_Surface.hxx>
 #include <ShapeFix_Face.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -106,15 +111,14 @@ TopoDS_Wire storedInOrder(const TopoDS_Wire& wire, const std::vector<TopoDS_Edge
   return TopoDS::Wire(stored.Oriented(against ? TopAbs_REVERSED : TopAbs_FORWARD));
 }
 
-// The plane face with each of its loops stored in the order the reference lists the script's
-// loop it came from (loops[0] the outer one). The face's geometry and its loops' edges and
-// orientations stay as they are; a loop not found as it was given is left alone.
-TopoDS_Face withLoopsInListingOrder(const TopoDS_Face& face,
-                                    const std::vector<TopoDS_Wire>& loops) {
+// The face with each of its loops stored in the order of one of `listings` (each edge turned
+// the way its listing runs). The face's geometry and its loops' edges and orientations stay as
+// they are; a loop not found among the face's is left alone.
+TopoDS_Face withLoopsListed(const TopoDS_Face& face,
+                            const std::vector<std::vector<TopoDS_Edge>>& listings) {
   const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
   std::vector<std::pair<TopoDS_Wire, TopoDS_Wire>> replaced;
-  for (std::size_t i = 0; i < loops.size(); ++i) {
-    const std::vector<TopoDS_Edge> listed = listingOrder(loops[i], i > 0);
+  for (const std::vector<TopoDS_Edge>& listed : listings) {
     if (listed.empty()) continue;
     const TopoDS_Wire wire = wireOfEdges(forward, listed);
     if (!wire.IsNull()) replaced.emplace_back(wire, storedInOrder(wire, listed));
@@ -128,6 +132,15 @@ TopoDS_Face withLoopsInListingOrder(const TopoDS_Face& face,
     builder.Add(rebuilt, child);
   }
   return TopoDS::Face(rebuilt.Oriented(face.Orientation()));
+}
+
+// The plane face with each of its loops stored in the order the reference lists the script's
+// loop it came from (loops[0] the outer one).
+TopoDS_Face withLoopsInListingOrder(const TopoDS_Face& face,
+                                    const std::vector<TopoDS_Wire>& loops) {
+  std::vector<std::vector<TopoDS_Edge>> listings;
+  for (std::size_t i = 0; i < loops.size(); ++i) listings.push_back(listingOrder(loops[i], i > 0));
+  return withLoopsListed(face, listings);
 }
 
 }  // namespace
@@ -157,49 +170,171 @@ namespace {
 
 // The face of `surface` bounded by the script's wire, whose curves lie on the surface only to
 // a tolerance: the fix computes their curves in the surface's parameters (on the same edges,
-// which keep their tags) and turns a loop that runs the wrong way round. Null when no face is
-// made.
+// which keep their tags) and turns a loop that runs the wrong way round. A wire known to turn
+// counter-clockwise about the surface's normal is left as it is: the fix's own guess can go
+// either way on a plate. Null when no face is made.
 std::optional<TopoDS_Face> faceOnSurface(const Handle(Geom_Surface)& surface,
-                                         const TopoDS_Wire& wire) {
-  BRepBuilderAPI_MakeFace maker(surface, wire, true);
+                                         const TopoDS_Wire& wire,
+                                         bool wireTurnsAboutNormal = false) {
+  BRepBuilderAPI_MakeFace maker(surface, wire, !wireTurnsAboutNormal);
   if (!maker.IsDone()) return std::nullopt;
   ShapeFix_Face fix(maker.Face());
   fix.FixAddNaturalBoundMode() = false;
+  if (wireTurnsAboutNormal) fix.FixOrientationMode() = 0;
   fix.Perform();
   return fix.Face();
+}
+
+// The face OpenCASCADE's plate filling makes, built as the reference builds it: degree 2, the
+// loop's edges in the order the loop stores them, then the points it passes through. Its edges
+// are new ones.
+TopoDS_Face plateFilling(const TopoDS_Wire& loop, const std::vector<gp_Pnt>& through,
+                         const std::string& what) {
+  BRepOffsetAPI_MakeFilling filling(2);
+  for (TopExp_Explorer it(loop, TopAbs_EDGE); it.More(); it.Next())
+    filling.Add(TopoDS::Edge(it.Current()), GeomAbs_C0, true);
+  for (const gp_Pnt& p : through) filling.Add(p);
+  filling.Build();
+  if (!filling.IsDone()) throw GeometryError(what + ": no surface fills this loop");
+  TopExp_Explorer faces(filling.Shape(), TopAbs_FACE);
+  if (!faces.More()) throw GeometryError(what + ": no surface fills this loop");
+  return TopoDS::Face(faces.Current());
+}
+
+// Whether the plate's own normal (its u and v derivatives crossed) is on the side about which
+// the loop turns counter-clockwise: drawn in the plate's parameter plane, the loop then encloses
+// a positive area. (The face made on the plate cannot say: its loop may run either way round.)
+bool plateFacesAlongLoop(const TopoDS_Face& onPlate, const TopoDS_Wire& loop) {
+  double twiceArea = 0;
+  for (TopExp_Explorer it(loop, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, onPlate, first, last);
+    if (curve.IsNull()) return true;
+    if (edge.Orientation() == TopAbs_REVERSED) std::swap(first, last);
+    constexpr int kSteps = 16;
+    for (int i = 0; i < kSteps; ++i) {
+      const gp_Pnt2d p = curve->Value(first + (last - first) * i / kSteps);
+      const gp_Pnt2d q = curve->Value(first + (last - first) * (i + 1) / kSteps);
+      twiceArea += p.X() * q.Y() - q.X() * p.Y();
+    }
+  }
+  return twiceArea >= 0;
+}
+
+// The order in which the reference lists the curves of a filling. Its face faces the side the
+// loop turns about, but it lists the loop the way the plate's own parameters run round it: from
+// the loop's first stored edge when the plate faces that side too; otherwise against the loop,
+// from the edge before the first one, ending at it.
+std::vector<TopoDS_Edge> fillingListing(const TopoDS_Wire& loop, bool plateAlongLoop) {
+  std::vector<TopoDS_Edge> chain = chainFromFirst(loop);
+  if (plateAlongLoop) return chain;
+  std::reverse(chain.begin(), chain.end());
+  for (TopoDS_Edge& e : chain) e.Reverse();
+  return chain;
+}
+
+// The normal of a plane: its u and v derivatives crossed.
+gp_Vec planeNormal(const Handle(Geom_Surface) & plane) {
+  gp_Pnt origin;
+  gp_Vec du, dv;
+  plane->D1(0, 0, origin, du, dv);
+  return du.Crossed(dv);
+}
+
+// The normal of the plane from which OpenCASCADE's plate filling of `loop` starts, and whose
+// parameters the plate keeps (GeomPlate_BuildPlateSurface with curves only): the plane its
+// GeomPlate_BuildAveragePlane fits to 20 points on each edge, the edges taken in the order
+// and sense of the chain they make from the first one, as it chains them. Found so without
+// the plate, which is costly; null when the points make no plane.
+std::optional<gp_Vec> plateStartNormal(const TopoDS_Wire& loop) {
+  std::vector<BRepAdaptor_Curve> curves;
+  for (TopExp_Explorer it(loop, TopAbs_EDGE); it.More(); it.Next())
+    curves.emplace_back(TopoDS::Edge(it.Current()));
+  const std::size_t n = curves.size();
+  if (n == 0) return std::nullopt;
+  constexpr double kTolerance = 1e-4;  // the filling's 3D tolerance
+  std::vector<bool> reversed(n, false);
+  const auto end = [&](std::size_t i) {
+    const BRepAdaptor_Curve& c = curves[i];
+    return c.Value(reversed[i] ? c.FirstParameter() : c.LastParameter());
+  };
+  for (std::size_t j = 0; j + 1 < n; ++j)
+    for (std::size_t i = j + 1; i < n; ++i) {
+      const gp_Pnt reached = end(j);
+      const BRepAdaptor_Curve& c = curves[i];
+      const bool fromStart = reached.Distance(c.Value(c.FirstParameter())) < kTolerance;
+      if (!fromStart && reached.Distance(c.Value(c.LastParameter())) >= kTolerance) continue;
+      std::swap(curves[j + 1], curves[i]);
+      reversed[j + 1] = !fromStart;
+      break;
+    }
+  constexpr int kPerCurve = 20;
+  const int count = kPerCurve * static_cast<int>(n);
+  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, count);
+  int at = 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double first = curves[i].FirstParameter(), last = curves[i].LastParameter();
+    const double from = reversed[i] ? last : first;
+    const double span = reversed[i] ? -(last - first) : last - first;
+    for (int j = 0; j < kPerCurve; ++j)
+      points->SetValue(at++, curves[i].Value(from + j * span / kPerCurve));
+  }
+  // Options 2 and 2: the normal from the polygon of the points, the plane's axes from their
+  // inertia (which, not the polygon, decides which way the plane faces).
+  GeomPlate_BuildAveragePlane plane(points, count, kTolerance / 1000, 2, 2);
+  if (!plane.IsPlane()) return std::nullopt;
+  return planeNormal(plane.Plane());
+}
+
+// Whether the plate filling a plane loop would face the side about which the loop turns
+// counter-clockwise: the side the plane face made on the loop faces. Taken as facing it when
+// unknown.
+bool planeLoopPlateFacesAlong(const TopoDS_Wire& loop, const TopoDS_Face& planeFace) {
+  const std::optional<gp_Vec> start = plateStartNormal(loop);
+  if (!start) return true;
+  const gp_Vec normal = planeNormal(BRep_Tool::Surface(planeFace));
+  return (planeFace.Orientation() == TopAbs_REVERSED ? -1 : 1) * start->Dot(normal) > 0;
 }
 
 }  // namespace
 
 // A surface through the loop's curves (OpenCASCADE's plate filling), bounded by them: the
 // filling's own face has new edges, so the face is rebuilt on the loop's wire, which keeps the
-// script's curves (and their tags) as its boundary.
+// script's curves (and their tags) as its boundary. It faces the side about which the loop
+// turns counter-clockwise, as in the reference; its curves are listed as the reference lists
+// them, which hangs on the side the plate faces.
 void OccFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
                                    const std::vector<int>& through) {
   tag = primitiveTag(2, tag, "Surface");
   const std::string what = "Surface " + std::to_string(tag);
   if (curveLoops.size() != 1) throw GeometryError(what + ": a filling takes one curve loop");
-  const TopoDS_Shape& wire = shapes_->findWire(std::abs(curveLoops[0]));
+  const TopoDS_Wire loop = TopoDS::Wire(shapes_->findWire(std::abs(curveLoops[0])));
+  std::vector<gp_Pnt> points;
+  for (int point : through)
+    points.push_back(BRep_Tool::Pnt(TopoDS::Vertex(shapes_->find(0, std::abs(point)))));
   const TopoDS_Shape face = guarded(what, [&] {
-    // A plane loop is filled by its plane: exact, so that Booleans with other plane faces
-    // find the faces coplanar (a plate surface through it is plane only to its tolerance).
+    // A plane loop is filled by its plane, made on the loop so that its normal follows the
+    // loop: exact, so that Booleans with other plane faces find the faces coplanar (the plate
+    // is plane only to its tolerance).
     if (through.empty()) {
-      BRepBuilderAPI_MakeFace plane(TopoDS::Wire(wire), true);
-      if (plane.IsDone()) return TopoDS_Shape(plane.Face());
+      BRepBuilderAPI_MakeFace plane(loop, true);
+      if (plane.IsDone()) {
+        const bool plateAlong = planeLoopPlateFacesAlong(loop, plane.Face());
+        return TopoDS_Shape(withLoopsListed(plane.Face(), {fillingListing(loop, plateAlong)}));
+      }
     }
-    // Degree 2 (OpenCASCADE defaults otherwise), as the reference builds its fillings.
-    BRepOffsetAPI_MakeFilling filling(2);
-    for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())
-      filling.Add(TopoDS::Edge(it.Current()), GeomAbs_C0, true);
-    for (int point : through)
-      filling.Add(BRep_Tool::Pnt(TopoDS::Vertex(shapes_->find(0, std::abs(point)))));
-    filling.Build();
-    if (!filling.IsDone()) throw GeometryError(what + ": no surface fills this loop");
-    TopExp_Explorer faces(filling.Shape(), TopAbs_FACE);
-    if (!faces.More()) throw GeometryError(what + ": no surface fills this loop");
-    const auto rebuilt = faceOnSurface(BRep_Tool::Surface(TopoDS::Face(faces.Current())),
-                                       TopoDS::Wire(wire));
-    return rebuilt ? TopoDS_Shape(*rebuilt) : filling.Shape();
+    const TopoDS_Face filled = plateFilling(loop, points, what);
+    const Handle(Geom_Surface) plate = BRep_Tool::Surface(filled);
+    const auto onPlate = faceOnSurface(plate, loop);
+    if (!onPlate) return TopoDS_Shape(filled);
+    // A plate facing the other way has its parameters turned round: meshes follow a
+    // surface's parameters, not its face's orientation. Either way the loop then turns
+    // counter-clockwise about the surface's normal.
+    const bool plateAlong = plateFacesAlongLoop(*onPlate, loop);
+    const auto turned = faceOnSurface(plateAlong ? plate : plate->UReversed(), loop, true);
+    return TopoDS_Shape(
+        withLoopsListed(turned.value_or(*onPlate), {fillingListing(loop, plateAlong)}));
   });
   shapes_->bindTree(2, tag, face);
 }

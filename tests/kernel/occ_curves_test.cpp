@@ -177,6 +177,42 @@ TEST(OccCurves, HalfCircleOutOfItsPlaneIsRefused) {
   EXPECT_NEAR(occ.length(1), kPi / std::sqrt(2), 1e-9);
 }
 
+// Arcs are parametrized as in the reference (whose parameter ranges these are): about their
+// normal, from the angle of their start, the angles counted from the x axis opposite to the one
+// OpenCASCADE picks for that normal. Fillings sample their loops at parameters.
+TEST(OccCurves, ArcsParametrizedAsInTheReference) {
+  OccFactory occ;
+  occ.addPoint(1, {0, 0, 0}, 0);
+  occ.addPoint(2, {1, 0, 0}, 0);
+  occ.addPoint(3, {0, 1, 0}, 0);
+  occ.addPoint(4, {-1, 0, 0}, 0);
+  occ.addPoint(5, {0, -1, 0}, 0);
+  occ.addPoint(6, {0.6, 0.8, 0}, 0);
+  occ.addPoint(7, {0, 0, 1}, 0);
+  occ.addPoint(8, {0.6, 0, 0.8}, 0);
+  occ.addCircleArc(1, 2, 1, 3);
+  occ.addCircleArc(2, 6, 1, 4);
+  occ.addCircleArc(3, 2, 1, 4);  // half circles turn clockwise about z
+  occ.addCircleArc(4, 4, 1, 2);
+  occ.addCircleArc(5, 3, 1, 5);
+  occ.addCircleArc(6, 2, 1, 7);
+  occ.addCircleArc(7, 8, 1, 7);
+  Model model;
+  occ.synchronize(model);
+  const double start2 = kPi + std::atan2(0.8, 0.6);  // 4.06888787 in the reference
+  const double start7 = 2 * kPi - std::asin(0.6);    // 5.6396842
+  const double expected[7][2] = {{kPi, 1.5 * kPi}, {start2, 2 * kPi},      {0, kPi},
+                                 {kPi, 2 * kPi},   {1.5 * kPi, 2.5 * kPi}, {1.5 * kPi, 2 * kPi},
+                                 {start7, 2 * kPi}};
+  for (int c = 1; c <= 7; ++c) {
+    const Interval range = model.curve(c)->geometry->range();
+    EXPECT_NEAR(range.min, expected[c - 1][0], 1e-8) << "curve " << c;
+    EXPECT_NEAR(range.max, expected[c - 1][1], 1e-8) << "curve " << c;
+  }
+  expectNear(model.curve(2)->geometry->point(start2), {0.6, 0.8, 0}, 1e-12);
+  expectNear(midpoint(model, 3), {0, -1, 0}, 1e-12);
+}
+
 TEST(OccCurves, CubeFromItsFaces) {
   OccFactory occ;
   occ.addBox(1, {0, 0, 0}, {1, 1, 1});
