@@ -90,7 +90,7 @@ std::optional<double> recombinationAngle(const Model& model, const MeshOptions& 
 // Edges recombination must keep: those of the curves embedded in a surface, and of its seams
 // (a curve its loops use twice, once from each side: a periodic surface's seam, whose two
 // sides are one edge in space but far apart in the parameter plane).
-std::vector<std::uint64_t> embeddedEdges(const ModelSurface& surface, const Mesh& mesh) {
+std::vector<std::uint64_t> edgesToKeep(const ModelSurface& surface, const Mesh& mesh) {
   std::vector<int> curves = surface.embeddedCurves;
   std::vector<int> bounding;
   for (const std::vector<int>& loop : surface.loops)
@@ -167,7 +167,7 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
   const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
-  const std::vector<std::uint64_t> kept = embeddedEdges(surface, mesh);
+  const std::vector<std::uint64_t> kept = edgesToKeep(surface, mesh);
   recombineTriangles(mesh, em, *angle,
                      simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom,
                      kept);

@@ -83,10 +83,9 @@ Vec3 unitNormal(const SurfaceGeometry& g, Vec2 uv) {
 
 }  // namespace
 
-// Principal curvatures are the roots k of det(II - k I) = 0, with the first fundamental form
-// I = (E, F, G) and the second II = (L, M, N) = -(n_u.x_u, (n_u.x_v + n_v.x_u) / 2, n_v.x_v).
 namespace {
-constexpr double kElementsPerBend = 6;  // per full turn, about as many as circles get (Mesh.MinimumCircleNodes)
+// Elements per full turn of a bend, about as many as circles get (Mesh.MinimumCircleNodes).
+constexpr double kElementsPerBend = 6;
 }  // namespace
 
 double bendSize(double curvature, double largest) {
@@ -109,23 +108,24 @@ bool hasPole(const Model& model, const ModelSurface& surface) {
   return false;
 }
 
+// Principal curvatures are the roots k of det(II - k I) = 0, with the first fundamental form
+// I = (E, F, G) and the second II = (L, M, N) = -(n_u.x_u, (n_u.x_v + n_v.x_u) / 2, n_v.x_v).
 double surfaceCurvature(const SurfaceGeometry& g, Vec2 uv) {
   const ParamBox box = g.bounds();
-  // At a pole the first fundamental form degenerates (one tangent vanishes) and the formula
-  // divides by nearly nothing: the curvature is read a little way off it, towards the box's
-  // centre, where the surface is regular.
-  const SurfaceDerivatives at = g.firstDerivatives(uv);
-  const double su = dot(at.du, at.du), sv = dot(at.dv, at.dv);
-  if (std::isfinite(box.u.max - box.u.min) && std::isfinite(box.v.max - box.v.min) &&
-      (su < 1e-12 * sv || sv < 1e-12 * su)) {
-    constexpr double kStep = 1e-3;
-    uv = {uv.u + kStep * (0.5 * (box.u.min + box.u.max) - uv.u),
-          uv.v + kStep * (0.5 * (box.v.min + box.v.max) - uv.v)};
-  }
   const double hu = 1e-5 * std::max(1.0, std::abs(box.u.max - box.u.min));
   const double hv = 1e-5 * std::max(1.0, std::abs(box.v.max - box.v.min));
   if (!std::isfinite(hu) || !std::isfinite(hv)) return 0;
-  const SurfaceDerivatives d = g.firstDerivatives(uv);
+  SurfaceDerivatives d = g.firstDerivatives(uv);
+  // At a pole the first fundamental form degenerates (one tangent vanishes) and the formula
+  // divides by nearly nothing: the curvature is read a little way off it, towards the box's
+  // centre, where the surface is regular.
+  const double su = dot(d.du, d.du), sv = dot(d.dv, d.dv);
+  if (su < 1e-12 * sv || sv < 1e-12 * su) {
+    constexpr double kStep = 1e-3;
+    uv = {uv.u + kStep * (0.5 * (box.u.min + box.u.max) - uv.u),
+          uv.v + kStep * (0.5 * (box.v.min + box.v.max) - uv.v)};
+    d = g.firstDerivatives(uv);
+  }
   // The normal's change over a step that stays within the parameter box: past its edge (a
   // pole, where the surface closes on a point) the surface folds back and the normal turns
   // over, which would read as a huge curvature.
