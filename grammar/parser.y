@@ -339,6 +339,9 @@ block:
 block_item:
   shape ';' { $$ = std::move($1); }
 | words ';' { $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1); }
+| words bare ';' {  // Recombine 1; inside an extrusion
+    $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);
+    $$->args.push_back(std::move($2)); }
 ;
 
 control:
@@ -422,6 +425,9 @@ item:
 | expr DOTS expr {  // the old spelling of a range: {1 ... 3} is {1:3}
     $$ = makeExpr(ExprKind::Range, @1);
     $$->args.push_back(std::move($1)); $$->args.push_back(std::move($3)); }
+| expr DOTS expr ':' expr {  // {1 ... 9 : 2} is {1:9:2}
+    $$ = makeExpr(ExprKind::Range, @1); $$->args.push_back(std::move($1));
+    $$->args.push_back(std::move($3)); $$->args.push_back(std::move($5)); }
 | ':' { $$ = makeExpr(ExprKind::All, @1); }
 ;
 

@@ -60,7 +60,8 @@ Value Interpreter::callMath(const MathFunction& function, const ast::Expr& call)
   }
 }
 
-std::string Interpreter::format(const ast::ExprList& args, const SourceLocation& where) {
+std::string Interpreter::format(const ast::ExprList& args, const SourceLocation& where,
+                                bool listWithoutFormat) {
   const std::string pattern = evaluateString(*args[0]);
   std::vector<FormatArgument> values;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -69,6 +70,16 @@ std::string Interpreter::format(const ast::ExprList& args, const SourceLocation&
       for (auto& s : value.strings()) values.emplace_back(s);
     else
       for (double x : value.numbers()) values.emplace_back(x);
+  }
+  if (listWithoutFormat && pattern.find('%') == std::string::npos) {
+    // Printf("x = ", x[]): a format with no conversion prints the values after it, numbered.
+    std::string line = pattern;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const std::vector<FormatArgument> item{values[i]};
+      line += " [" + std::to_string(i) + "]" +
+              formatPrintf(std::holds_alternative<double>(values[i]) ? "%g" : "%s", item);
+    }
+    return line;
   }
   try {
     return formatPrintf(pattern, values);

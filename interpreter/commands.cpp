@@ -41,7 +41,7 @@ void Interpreter::executeMessage(const ast::CommandStmt& command, const SourceLo
   if (command.argStyle != ast::CommandStmt::Args::Paren || command.args.empty())
     return unsupportedStatement(command, where);
   const std::string message = command.args.size() == 1 ? evaluateString(*command.args[0])
-                                                       : format(command.args, where);
+                                                       : format(command.args, where, true);
   if (command.words.front() == "Error") fail(where, message);
   warn(where, message);
 }
@@ -76,7 +76,7 @@ void Interpreter::executePrintf(const ast::CommandStmt& command, const SourceLoc
   if (command.argStyle != ast::CommandStmt::Args::Paren || command.args.empty())
     fail(where, "Printf takes a format string and values, as in Printf(\"x = %g\", x)");
   const std::string line = command.args.size() == 1 ? evaluateString(*command.args[0])
-                                                    : format(command.args, where);
+                                                    : format(command.args, where, true);
   if (!command.redirectTarget) {
     // Script output is a "direct" message: shown from verbosity 3 up, as in Gmsh.
     if (session_.options().number("General.Verbosity") >= 3) session_.out() << line << '\n';

@@ -101,7 +101,10 @@ class Interpreter {
   Value nameOfStruct(const ast::Expr& call);
   std::optional<Value> builtinConstant(std::string_view name);
   std::optional<Value> textConstant(std::string_view name, const SourceLocation& where);
-  std::string format(const ast::ExprList& args, const SourceLocation& where);
+  // printf-style formatting of args[1..] by the string args[0] (Printf, Sprintf). With
+  // listWithoutFormat (Printf), a string with no conversion is followed by the values listed.
+  std::string format(const ast::ExprList& args, const SourceLocation& where,
+                     bool listWithoutFormat = false);
 
   // commands: executeCommand finds the statement's handler in the statement table
   // (statement_table.cpp); every handler takes the command and its location.

@@ -109,7 +109,8 @@ AffineMap Interpreter::transformMap(const ast::Expr& shape) {
 ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
   ExtrusionLayers layers;
   for (const auto& item : block.items) {
-    if (item->words == Words{"Recombine"}) layers.recombine = true;
+    if (item->words == Words{"Recombine"})  // Recombine; or Recombine expr;
+      layers.recombine = item->args.empty() || evaluateNumber(*item->args[0]) != 0;
     if (item->words != Words{"Layers"} || item->parts.empty()) continue;
     const auto& values = item->parts[0].items;
     if (values.size() == 1) {

@@ -21,6 +21,22 @@ TEST(OlderForms, DotsRangeIsAColonRange) {
             "1 2 3 7\n");
   EXPECT_EQ(printed("x() = {3 ... 1}; Printf(\"%g %g\", #x(), x(2));"), "3 1\n");
   EXPECT_EQ(firstLineOf("x() = {1 ... };"), "test.geo:1:14: error: unexpected '}', expected an expression");
+  EXPECT_EQ(printed("x() = {1 ... 10 : 2}; Printf(\"%g %g %g\", #x(), x(1), x(4));"), "5 3 9\n");
+}
+
+TEST(OlderForms, PrintfWithoutConversionListsTheValues) {
+  EXPECT_EQ(printed("x() = {1, 2, 3.5}; Printf(\"x = \", x());"), "x =  [0]1 [1]2 [2]3.5\n");
+  EXPECT_EQ(printed("Printf(\"w\", 5);"), "w [0]5\n");
+  EXPECT_EQ(firstLineOf("x() = {1, 2}; Printf(\"y %g\", x());"),
+            "test.geo:1:15: error: 1 extra argument for the format");
+}
+
+TEST(OlderForms, RecombineWithAValueInsideAnExtrusion) {
+  EXPECT_EQ(printed("Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Line(1) = {1, 2};\n"
+                    "Extrude {0, 1, 0} { Line{1}; Layers{2}; Recombine 0; }\n"
+                    "r = 1; Extrude {0, -1, 0} { Line{1}; Layers{2}; Recombine r; }\n"
+                    "Mesh 2; Printf(\"%g %g\", Mesh.NbTriangles, Mesh.NbQuadrangles);"),
+            "8 4\n");
 }
 
 TEST(OlderForms, ZeroAndNegativeTags) {
