@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <utility>
 
@@ -137,7 +138,20 @@ std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface
 
 
 void GeoFactory::synchronize(Model& model) const {
-  for (const auto& [tag, p] : points_) model.addPoint(p);
+  // A closed B-spline is periodic and passes through none of its control points: the point
+  // that closes it is placed where the curve starts (and ends).
+  std::map<int, Vec3> closingPoints;
+  for (const auto& [tag, c] : curves_)
+    if (c.kind == CurveKind::BSpline && c.knots.empty() && c.points.size() >= 4 &&
+        c.start() == c.end()) {
+      const auto geometry = curveGeometry(c);
+      closingPoints.emplace(c.start(), geometry->point(geometry->range().min));
+    }
+  for (const auto& [tag, p] : points_) {
+    ModelPoint& point = model.addPoint(p);
+    if (auto moved = closingPoints.find(tag); moved != closingPoints.end())
+      point.xyz = moved->second;
+  }
   for (const auto& [tag, c] : curves_) {
     ModelCurve& curve = model.addCurve(ModelCurve{tag, c.start(), c.end(), curveGeometry(c)});
     curve.extrusion = c.extrusion;

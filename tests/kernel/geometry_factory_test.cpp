@@ -220,6 +220,24 @@ TEST(CurveKind, BuiltInCurvesSayWhatTheyAre) {
   EXPECT_NEAR(model.curve(3)->geometry->arcAngle(), std::numbers::pi / 2, 1e-12);
 }
 
+TEST(CurveKind, ClosedBSplineMovesItsEndPointOntoTheCurve) {
+  GeoFactory geo;
+  const Vec3 control[] = {{0, 0, 0}, {1, 0.2, 0}, {2, 0, 0}, {1.6, 1, 0}, {1, 1.6, 0}, {0.2, 0.8, 0}};
+  for (int i = 0; i < 6; ++i) geo.addPoint(i + 1, control[i], 0);
+  geo.addBSpline(1, {1, 2, 3, 4, 5, 6, 1});
+  Model model;
+  geo.synchronize(model);
+  // A uniform cubic periodic B-spline starts at (last + 4 first + second) / 6.
+  const Vec3 start = model.point(1)->xyz;
+  EXPECT_NEAR(start.x, 0.2, 1e-12);
+  EXPECT_NEAR(start.y, 1.0 / 6.0, 1e-12);
+  const auto& curve = *model.curve(1)->geometry;
+  const Vec3 a = curve.point(curve.range().min), b = curve.point(curve.range().max);
+  EXPECT_LT(norm(a - start), 1e-12);
+  EXPECT_LT(norm(b - start), 1e-12);
+  EXPECT_EQ(model.point(2)->xyz.x, 1.0);  // the other control points stay
+}
+
 TEST(SurfaceKind, PlanesAndBoxFacesArePlanes) {
   GeoFactory geo;
   addUnitSquareSurface(geo);
