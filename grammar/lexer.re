@@ -130,11 +130,13 @@ Parser::symbol_type Lexer::number(const Parser::location_type& where) {
   return Parser::make_NUMBER(value, where);
 }
 
-// A string literal keeps its characters as written, except that \" stands for a quote.
+// A string literal keeps its characters as written, except that \" (or \' in a string
+// between single quotes) stands for the quote.
 Parser::symbol_type Lexer::quoted(const Parser::location_type& where) {
   std::string value;
+  const char quote = *token_;
   for (const char* p = token_ + 1; p < cursor_ - 1; ++p) {
-    if (*p == '\\' && p + 1 < cursor_ - 1 && p[1] == '"') ++p;
+    if (*p == '\\' && p + 1 < cursor_ - 1 && p[1] == quote) ++p;
     value += *p;
   }
   countLines(token_, cursor_);
@@ -197,6 +199,7 @@ Parser::symbol_type Lexer::scan() {
       number = digit+ exponent? | digit+ "." digit* exponent? | "." digit+ exponent?;
       ident = [a-zA-Z_] [a-zA-Z0-9_]*;
       string = ["] ([^"\\\x00] | "\\" [^\x00])* ["];
+      sstring = ['] ([^'\\\x00] | "\\" [^\x00])* ['];
 
       "\x00" {
         if (cursor_ - 1 < limit_) fail(tokenLocation(), "unexpected NUL character");
@@ -210,7 +213,8 @@ Parser::symbol_type Lexer::scan() {
       number { afterDot_ = false; defineAhead_ = false; return number(tokenLocation()); }
       ident { auto where = tokenLocation(); return word(std::string(token_, cursor_), where); }
       string { afterDot_ = false; return quoted(tokenLocation()); }
-      ["] { fail(tokenLocation(), "unterminated string"); }
+      sstring { afterDot_ = false; return quoted(tokenLocation()); }  // 'text' as "text"
+      ["'] { fail(tokenLocation(), "unterminated string"); }
       "==" { return Parser::make_EQ(tokenLocation()); }
       "!=" { return Parser::make_NE(tokenLocation()); }
       "<=" { return Parser::make_LE(tokenLocation()); }

@@ -38,8 +38,11 @@ namespace {
 
 EllipseArcGeometry makeEllipseArc(Vec3 start, Vec3 center, Vec3 majorPoint, Vec3 end,
                                   const std::string& what) {
-  const Vec3 major = normalized(majorPoint - center);
-  if (norm(majorPoint - center) == 0) failEllipse(what, "the major-axis point is the center");
+  // A major-axis point at the center (as in Ellipse(1) = {2, 1, 1, 3};, often written for
+  // circles) puts the axis through the start.
+  const Vec3 towards = norm(majorPoint - center) == 0 ? start : majorPoint;
+  if (norm(towards - center) == 0) failEllipse(what, "its start is the center");
+  const Vec3 major = normalized(towards - center);
   // The plane of the arc holds the major axis and both ends.
   Vec3 normal = cross(major, start - center);
   if (norm(normal) < 1e-12 * norm(start - center)) normal = cross(major, end - center);

@@ -39,6 +39,12 @@ TEST(OlderForms, RecombineWithAValueInsideAnExtrusion) {
             "8 4\n");
 }
 
+TEST(OlderForms, SingleQuotedStrings) {
+  EXPECT_EQ(printed("s = 'wall'; t = 'it\\'s'; Printf(\"%s %s %g\", s, t, StrLen('ab'));"),
+            "wall it's 2\n");
+  EXPECT_EQ(firstLineOf("s = 'wall;"), "test.geo:1:5: error: unterminated string");
+}
+
 TEST(OlderForms, ZeroAndNegativeTags) {
   EXPECT_EQ(printed("Point(0) = {0, 0, 0}; Point(-1) = {1, 0, 0}; Point(-5) = {2, 0, 0};\n"
                     "Line(0) = {0, -1}; Line(-2) = {1, 2};\n"

@@ -108,6 +108,14 @@ TEST(EllipseArcGeometry, QuarterOfACircleHasTheRightLength) {
   expectNear(flat.point(0.1), {1.975377, 0.156434, 0}, 1e-6);
 }
 
+TEST(EllipseArcGeometry, MajorAxisPointAtTheCenterTakesTheStartsDirection) {
+  // {start, center, center, end}: the axis through the start, a quarter of the ellipse 2 x 1.
+  EllipseArcGeometry arc = makeEllipseArc({2, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, "E");
+  EXPECT_NEAR(length(arc), 2.4221120551, 1e-8);
+  expectNear(arc.point(0.1), {1.975377, 0.156434, 0}, 1e-6);
+  EXPECT_THROW(makeEllipseArc({0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, "E"), GeometryError);
+}
+
 TEST(EllipseArcGeometry, RejectsImpossibleEnds) {
   EXPECT_THROW(makeEllipseArc({1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, "Ellipse 3"),
                GeometryError);
