@@ -62,7 +62,8 @@ std::string unsavedEntities(const Model& model, const Mesh& mesh) {
   static constexpr const char* kKinds[] = {"point", "curve", "surface", "volume"};
   const std::set<EntityId> grouped = physicalEntities(model);
   std::set<int> groupedDims;
-  for (const auto& [id, group] : model.physicalGroups()) groupedDims.insert(id.dim);
+  for (EntityId id : grouped)
+    if (model.contains(id) || mesh.find(id)) groupedDims.insert(id.dim);
   std::vector<std::string> names;
   std::size_t elements = 0;
   for (const auto& [id, em] : mesh.entities()) {

@@ -50,11 +50,18 @@ std::set<EntityId> physicalEntities(const Model& model) {
   return out;
 }
 
+bool savesPhysicalsOnly(const Model& model, const Mesh& mesh, bool saveAll) {
+  if (saveAll) return false;
+  for (EntityId e : physicalEntities(model))
+    if (model.contains(e) || mesh.find(e)) return true;
+  return false;
+}
+
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) {
   MshContent content;
   for (EntityId e : model.entities(-1)) content.entities.insert(e);
   for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
-  content.physicalOnly = !saveAll && !model.physicalGroups().empty();
+  content.physicalOnly = savesPhysicalsOnly(model, mesh, saveAll);
   const bool physicalOnly = content.physicalOnly;
   const std::set<EntityId> physical = physicalEntities(model);
 
@@ -99,7 +106,7 @@ MshContent selectPartitionedContent(const Model& model, const Mesh& mesh, bool s
   for (EntityId e : model.entities(-1)) content.entities.insert(e);
   for (const auto& [id, em] : mesh.entities()) content.entities.insert(id);
   content.physicalOnly =
-      !saveAll && (!model.physicalGroups().empty() || !partitions.physicalGroups.empty());
+      savesPhysicalsOnly(model, mesh, saveAll) || (!saveAll && !partitions.physicalGroups.empty());
   const bool physicalOnly = content.physicalOnly;
   for (const PartitionEntity& piece : partitions.entities) {
     const auto& parts = piece.partitions;

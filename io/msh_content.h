@@ -39,6 +39,10 @@ struct MshContent {
 
 // The entities that physical groups of the model hold.
 std::set<EntityId> physicalEntities(const Model& model);
+// Whether only the elements of physical groups are saved: not with saveAll, nor when no
+// entity of the model or the mesh is in a group (the groups named only entities missing),
+// as the reference decides.
+bool savesPhysicalsOnly(const Model& model, const Mesh& mesh, bool saveAll);
 
 // With physical groups and !saveAll, only elements of entities in a physical group are saved;
 // an entity's node block is then written when the entity is in a group or has a node used by a

@@ -27,9 +27,9 @@ struct Solid {
   std::vector<const ElementBlock*> blocks;
 };
 
-std::vector<Solid> solidsOf(const Model& model, const SurfaceContent& surface, bool saveAll) {
+std::vector<Solid> solidsOf(const Model& model, const SurfaceContent& surface) {
   std::vector<Solid> solids;
-  if (saveAll || model.physicalGroups().empty()) {
+  if (!surface.content.physicalOnly) {
     for (const MshElementBlock& b : surface.blocks) {
       const std::string name = "surface" + std::to_string(b.entity.tag);
       if (solids.empty() || solids.back().name != name) solids.push_back({name, {}});
@@ -121,7 +121,7 @@ void writeBinary(std::ostream& out, const Mesh& mesh, const std::vector<Solid>& 
 void writeStl(std::ostream& out, const Model& model, const Mesh& mesh,
               const MeshWriteOptions& options) {
   const SurfaceContent surface = selectSurfaceContent(model, mesh, options.saveAll, "stl");
-  const std::vector<Solid> solids = solidsOf(model, surface, options.saveAll);
+  const std::vector<Solid> solids = solidsOf(model, surface);
   if (options.binary)
     writeBinary(out, mesh, solids);
   else
