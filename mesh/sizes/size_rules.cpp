@@ -181,17 +181,28 @@ SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
   return rules;
 }
 
+namespace {
+
+// A point's own size, 0 when it has none: a size of 1e22 or more, the reference's "unset"
+// value that scripts written by its interface carry, is none too.
+double ownSize(const ModelPoint& p) {
+  constexpr double kUnset = 1e22;
+  return p.meshSize > 0 && p.meshSize < kUnset ? p.meshSize : 0;
+}
+
+}  // namespace
+
 std::pair<double, double> SizeRules::curveEndSizes(const ModelPoint& start,
                                                    const ModelPoint& end) const {
   if (!fromPoints) return {kUnbounded, kUnbounded};
-  const double a = start.meshSize > 0 ? start.meshSize : 0;
-  const double b = end.meshSize > 0 ? end.meshSize : 0;
+  const double a = ownSize(start);
+  const double b = ownSize(end);
   if (a == 0 && b == 0) return {defaultSize, defaultSize};
   return {a > 0 ? a : kUnbounded, b > 0 ? b : kUnbounded};
 }
 
 double SizeRules::pointSize(const ModelPoint& p) const {
-  const double own = !fromPoints ? kUnbounded : p.meshSize > 0 ? p.meshSize : defaultSize;
+  const double own = !fromPoints ? kUnbounded : ownSize(p) > 0 ? ownSize(p) : defaultSize;
   return std::min(own, curvatureBound(p.tag));
 }
 

@@ -123,6 +123,19 @@ TEST(CurveSizing, EllipseIsRefinedWhereItBendsMost) {
   }
 }
 
+TEST(CurveSizing, SizeOf1e22IsNoSizeAtAll) {
+  // Scripts saved by the reference's interface write 1e22 for "no size": such points take the
+  // default size (a tenth of the model's diagonal) as points without a size do.
+  PolygonModelBuilder unset, none;
+  unset.line(unset.point(0, 0, 1e22), unset.point(10, 0, 1e22));
+  none.line(none.point(0, 0, 0), none.point(10, 0, 0));
+  const std::size_t expected = segments(meshCurves(none.model, {}), 1);
+  EXPECT_EQ(expected, 10u);
+  EXPECT_EQ(segments(meshCurves(unset.model, {}), 1), expected);
+  const SizeRules rules = SizeRules::from(unset.model, {});
+  EXPECT_NEAR(rules.pointSize(*unset.model.point(1)), 1, 1e-12);
+}
+
 TEST(CurveSizing, OffMeansNoCurvatureBound) {
   SizeRules rules;
   EXPECT_GT(rules.curvatureSize(1), 1e20);
