@@ -34,6 +34,10 @@ void Interpreter::defineCurveThroughPoints(const ast::CommandStmt& command, int 
                                                              : value.loc,
                                   "unexpected words after " + kind + "(" +
                                       std::to_string(tag) + ") = {..}");
+  if (kind == "Line" && points.size() == 2 && points[0] == points[1] &&
+      geo.name() != "OpenCASCADE")
+    warn(value.loc, "Line " + std::to_string(tag) + ": both ends are point " +
+                        std::to_string(points[0]) + "; a line of no length makes no curve");
   if (kind == "Line" && points.size() == 2) return geo.addLine(tag, points[0], points[1]);
   if (kind == "Line") return geo.addPolyline(tag, points);
   if (kind == "Ellipse" || kind == "Ellipsis") {

@@ -216,6 +216,10 @@ void Interpreter::defineCircleArc(const ast::CommandStmt& command, const SourceL
   std::vector<int> points = entityTags(*command.value);
   for (int& p : points) p = std::abs(p);
   const std::optional<Vec3> normal = circlePlaneNormal(command);
+  if (points[0] == points[2] && points[0] != points[1])
+    warn(where, "Circle " + std::to_string(tag) + " goes a whole turn from point " +
+                    std::to_string(points[0]) + " back to it: arcs of more than half a turn "
+                    "are better split in two");
   try {
     if (normal)
       session_.factory().addCircleArcAbout(tag, points[0], points[1], points[2], *normal);

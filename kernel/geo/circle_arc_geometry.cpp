@@ -13,6 +13,7 @@ CircleArcGeometry::CircleArcGeometry(Vec3 center, Vec3 start, Vec3 end, Vec3 axi
       endRadius_(distance(end, center)),
       angle_(std::atan2(dot(end - center, e2_), dot(end - center, e1_))) {
   if (angle_ < 0) angle_ += 2 * std::acos(-1.0);
+  if (start == end) angle_ = 2 * std::acos(-1.0);  // a whole turn back to its start
 }
 
 Vec3 CircleArcGeometry::radial(double t) const {

@@ -25,7 +25,9 @@ void GeoFactory::addCircleArc(int tag, int startPoint, int centerPoint, int endP
   const double tolerance = absoluteTolerance();
   if (r1 <= tolerance || r2 <= tolerance)
     fail("Circle ", tag, ": its center, point ", centerPoint, ", is one of its ends");
-  if (distance(start, end) <= tolerance)
+  // From a point back to itself: a whole circle (the reference warns that the arc is more
+  // than half a turn, and builds it).
+  if (startPoint != endPoint && distance(start, end) <= tolerance)
     fail("Circle ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
   if (std::abs(r1 - r2) > 0.1 * std::max(r1, r2))
     fail("Circle ", tag, ": points ", startPoint, " and ", endPoint,

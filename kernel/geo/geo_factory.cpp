@@ -71,8 +71,9 @@ void GeoFactory::addLine(int tag, int startPoint, int endPoint) {
   requireNew(curves_, tag, "Curve");
   for (int p : {startPoint, endPoint})
     if (!hasPoint(p)) fail("Line ", tag, ": point ", p, " is not defined");
-  if (startPoint == endPoint)
-    fail("Line ", tag, ": both ends are point ", startPoint);
+  // A line from a point to itself makes no curve; its tag counts as used, as the script's
+  // later tags (newl) expect.
+  if (startPoint == endPoint) return noteTag(1, tag);
   if (distance(points_.at(startPoint).xyz, points_.at(endPoint).xyz) <= absoluteTolerance())
     fail("Line ", tag, ": points ", startPoint, " and ", endPoint, " coincide");
   curves_[tag] = Curve{tag, CurveKind::Line, {startPoint, endPoint}};

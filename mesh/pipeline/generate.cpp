@@ -255,7 +255,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     const StageTimer timer(2);
     meshSurfaces({model, options, rules, fields, dim, log}, mesh);
     if (wantsAllQuadrangles(model, options)) {
-      if (dim == 2)
+      if (dim == 2 || model.volumes().empty())
         subdivideIntoQuadrangles(model, mesh);
       else
         log.warning("splitting into quadrangles is only done for 2D meshes; ignored");

@@ -45,6 +45,22 @@ TEST(OlderForms, SingleQuotedStrings) {
   EXPECT_EQ(firstLineOf("s = 'wall;"), "test.geo:1:5: error: unterminated string");
 }
 
+TEST(OlderForms, CircleBackToItsStartIsAWholeCircle) {
+  ScriptRun run;
+  run.run("Point(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
+          "Circle(1) = {2, 1, 2}; Curve Loop(1) = {1}; Plane Surface(1) = {1};\n"
+          "Line(2) = {1, 1};\nPrintf(\"%g %g\", #Curve{:}, newl);\nMesh 2;\n"
+          "Printf(\"%g\", Mesh.NbTriangles > 300);");
+  EXPECT_EQ(run.out.str(), "1 3\n1\n");
+  ASSERT_EQ(run.log.warnings.size(), 2u);
+  EXPECT_NE(run.log.warnings[0].find("Circle 1 goes a whole turn from point 2"), std::string::npos);
+  EXPECT_NE(run.log.warnings[1].find("Line 2: both ends are point 1"), std::string::npos);
+  const auto& circle = *run.session.model().curve(1)->geometry;
+  EXPECT_NEAR(circle.arcAngle(), 2 * 3.14159265358979, 1e-12);
+  const Vec3 half = circle.point((circle.range().min + circle.range().max) / 2);
+  EXPECT_NEAR(half.x, -1, 1e-12);
+}
+
 TEST(OlderForms, ZeroAndNegativeTags) {
   EXPECT_EQ(printed("Point(0) = {0, 0, 0}; Point(-1) = {1, 0, 0}; Point(-5) = {2, 0, 0};\n"
                     "Line(0) = {0, -1}; Line(-2) = {1, 2};\n"

@@ -123,7 +123,10 @@ TEST(GeoFactory, ErrorsNameTheTags) {
   GeoFactory geo;
   addUnitSquare(geo);
   EXPECT_EQ(errorOf([&] { geo.addLine(7, 1, 9); }), "Line 7: point 9 is not defined");
-  EXPECT_EQ(errorOf([&] { geo.addLine(7, 2, 2); }), "Line 7: both ends are point 2");
+  // A line from a point to itself makes no curve, as in the reference, but uses up its tag.
+  EXPECT_EQ(errorOf([&] { geo.addLine(8, 2, 2); }), "");
+  EXPECT_FALSE(geo.contains({1, 8}));
+  EXPECT_EQ(geo.maxTag(1), 8);
   geo.addPoint(5, {1, 1, 1e-12}, 1);
   EXPECT_EQ(errorOf([&] { geo.addLine(7, 3, 5); }), "Line 7: points 3 and 5 coincide");
   EXPECT_EQ(errorOf([&] { geo.addPoint(1, {5, 5, 5}, 1); }), "Point 1 already exists");
