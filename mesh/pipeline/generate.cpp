@@ -159,8 +159,13 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
   const std::optional<double> angle = surfaceRecombination(stage, surface.tag);
   const auto& transfinite = model.meshConstraints().transfiniteSurfaces;
   if (const auto it = transfinite.find(surface.tag); it != transfinite.end()) {
-    meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh);
-    return;
+    try {
+      meshTransfiniteSurface(model, surface, it->second, angle.has_value(), mesh);
+      return;
+    } catch (const TransfiniteSidesMismatch& mismatch) {
+      stage.log.warning(entityName(mismatch.entity) + " is meshed as if not transfinite: " +
+                        mismatch.reason);
+    }
   }
   meshSurface(model, surface, stage.rules, options.smoothing, mesh, &stage.fields,
               surfaceAlgorithm(stage, surface));

@@ -93,9 +93,9 @@ Grid gridFromSides(const std::vector<Side>& s, EntityId id) {
   const Side& right = s[1];
   const Side& top = s[2];
   auto mismatch = [&](std::size_t a, std::size_t b, const char* what) {
-    throw MeshError(id, std::string("transfinite surface: ") + what + " have " +
-                            std::to_string(a) + " and " + std::to_string(b) +
-                            " nodes; they must have as many");
+    throw TransfiniteSidesMismatch(id, std::string("transfinite surface: ") + what + " have " +
+                                           std::to_string(a) + " and " + std::to_string(b) +
+                                           " nodes; they must have as many");
   };
   if (bottom.size() != top.size())
     mismatch(bottom.size(), top.size(), apex ? "the sides at the first corner" : "sides 1 and 3");

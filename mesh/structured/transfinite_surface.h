@@ -5,6 +5,7 @@
 
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
+#include "mesh/core/mesh_error.h"
 
 namespace geomesh {
 
@@ -16,6 +17,14 @@ namespace geomesh {
 // `recombine`; on a 3-sided surface the cells at the first corner are triangles. Elements
 // are counter-clockwise in the surface's parametrization. Throws MeshError naming the surface
 // when its boundary does not fit.
+// Thrown by meshTransfiniteSurface, before it changes the mesh, when opposite sides have
+// different numbers of nodes: the reference then meshes the surface as if not transfinite.
+class TransfiniteSidesMismatch : public MeshError {
+ public:
+  TransfiniteSidesMismatch(EntityId e, const std::string& why) : MeshError(e, why), reason(why) {}
+  std::string reason;
+};
+
 void meshTransfiniteSurface(const Model& model, const ModelSurface& surface,
                             const TransfiniteSurface& constraint, bool recombine, Mesh& mesh);
 
