@@ -147,7 +147,8 @@ void GeoFactory::addSurfaceLoop(int tag, std::vector<int> surfaces) {
   for (int s : surfaces)
     if (!surfaces_.contains(std::abs(s)))
       fail("Surface loop ", tag, ": surface ", std::abs(s), " is not defined");
-  checkShellClosed(tag, surfaces);
+  // Closure is checked by the volume: as in the reference, a volume's loops need only be
+  // closed together (an outer shell and an inner one may share their edges).
   surfaceLoops_[tag] = std::move(surfaces);
   noteTag(kSurfaceLoop, tag);
 }
@@ -168,6 +169,9 @@ void GeoFactory::addVolume(int tag, std::vector<int> surfaceLoops) {
       for (int& s : shell) s = -s;
     volume.shells.push_back(std::move(shell));
   }
+  std::vector<int> all;
+  for (const auto& shell : volume.shells) all.insert(all.end(), shell.begin(), shell.end());
+  checkShellClosed(tag, surfaceLoops, all);
   volumes_[tag] = std::move(volume);
   noteTag(3, tag);
 }
@@ -286,14 +290,18 @@ std::vector<int> GeoFactory::loopCurves(int signedLoop) const {
 }
 
 // A closed shell uses each curve of its surfaces' boundaries exactly twice.
-void GeoFactory::checkShellClosed(int tag, const std::vector<int>& surfaces) const {
+void GeoFactory::checkShellClosed(int volume, const std::vector<int>& loops,
+                                  const std::vector<int>& surfaces) const {
   std::map<int, std::vector<int>> surfacesOfCurve;
   for (int s : surfaces)
     for (const auto& loop : surfaces_.at(std::abs(s)).loops)
       for (int c : loop) surfacesOfCurve[std::abs(c)].push_back(s);
   for (const auto& [curve, users] : surfacesOfCurve)
     if (users.size() != 2)
-      fail("Surface loop ", tag, " is not closed: curve ", curve, " bounds ", users.size(),
+      fail(loops.size() == 1 ? "Surface loop " + std::to_string(std::abs(loops[0]))
+                             : "Volume " + std::to_string(volume) + ": its surface loops",
+           loops.size() == 1 ? " is not closed" : " are not closed", ": curve ", curve, " bounds ",
+           users.size(),
            users.size() == 1 ? " of its surfaces (surface " : " of its surfaces (surfaces ",
            std::abs(users.front()), users.size() == 1 ? ")" : ", ...)");
 }

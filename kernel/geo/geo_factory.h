@@ -247,7 +247,8 @@ class GeoFactory final : public GeometryFactory {
   std::pair<std::shared_ptr<const SurfaceGeometry>, double> fitPlaneSurface(
       int tag, const std::vector<std::vector<int>>& loops) const;
   void replaceCurveInLoops(int tag, const std::vector<int>& pieces);
-  void checkShellClosed(int tag, const std::vector<int>& surfaces) const;
+  void checkShellClosed(int volume, const std::vector<int>& loops,
+                        const std::vector<int>& surfaces) const;
 
   // geo_transform.cpp
   void requireShape(EntityId shape, const char* operation) const;

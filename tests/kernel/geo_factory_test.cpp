@@ -168,11 +168,18 @@ TEST(GeoFactory, TinyDeviationWithinToleranceIsPlane) {
   EXPECT_NO_THROW(geo.addPlaneSurface(1, {1}));
 }
 
-TEST(GeoFactory, OpenSurfaceLoopIsRejected) {
+TEST(GeoFactory, OpenSurfaceLoopIsRejectedByItsVolume) {
   GeoFactory geo;
   addUnitCube(geo);
-  EXPECT_EQ(errorOf([&] { geo.addSurfaceLoop(2, {1, 2, 3, 4, 5}); }),
+  geo.addSurfaceLoop(2, {1, 2, 3, 4, 5});  // the reference takes it too
+  EXPECT_EQ(errorOf([&] { geo.addVolume(2, {2}); }),
             "Surface loop 2 is not closed: curve 4 bounds 1 of its surfaces (surface 1)");
+  geo.addSurfaceLoop(3, {6});  // together, loops 2 and 3 close
+  EXPECT_EQ(errorOf([&] { geo.addVolume(2, {2, 3}); }), "");
+  geo.addSurfaceLoop(4, {1, 2});
+  EXPECT_EQ(errorOf([&] { geo.addVolume(3, {4, 3}); }),
+            "Volume 3: its surface loops are not closed: curve 1 bounds 1 of its surfaces "
+            "(surface 1)");
 }
 
 // Points 5 to 7 and lines 5 to 7: a triangle inside the unit square, counter-clockwise.
