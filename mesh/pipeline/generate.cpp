@@ -118,25 +118,10 @@ struct SurfaceStage {
   MessageSink& log;
 };
 
-// Whether every volume the surface bounds is a Transfinite Volume (meshed with hexahedra).
-bool boundsOnlyTransfiniteVolumes(const Model& model, int tag) {
-  const auto& transfinite = model.meshConstraints().transfiniteVolumes;
-  const std::vector<int> volumes = model.upward({2, tag});
-  return std::all_of(volumes.begin(), volumes.end(),
-                     [&](int v) { return transfinite.contains(v); });
-}
-
-// Quadrangles on the boundary of a volume would leave the tetrahedral mesher without a
-// closed triangulated shell: recombination is skipped there, with a warning.
+// A recombined surface keeps its quadrangles whatever volumes it bounds: a tetrahedral
+// volume stands pyramids on them (see addPyramids), as the reference does.
 std::optional<double> surfaceRecombination(const SurfaceStage& stage, int tag) {
   std::optional<double> angle = recombinationAngle(stage.model, stage.options, tag);
-  if (angle && stage.dim >= 3 && !stage.model.upward({2, tag}).empty() &&
-      !boundsOnlyRecombinedExtrusions(stage.model, tag) &&
-      !boundsOnlyTransfiniteVolumes(stage.model, tag)) {
-    stage.log.warning("surface " + std::to_string(tag) +
-                      " bounds a volume meshed with tetrahedra: it is not recombined");
-    angle.reset();
-  }
   return angle;
 }
 

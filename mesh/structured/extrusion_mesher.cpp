@@ -322,14 +322,6 @@ bool isMeshed(const Mesh& mesh, EntityId e) {
 
 bool isLayeredExtrusion(const ModelVolume& volume) { return hasLayers(volume.extrusion); }
 
-bool boundsOnlyRecombinedExtrusions(const Model& model, int surfaceTag) {
-  const std::vector<int> volumes = model.upward({2, surfaceTag});
-  return !volumes.empty() && std::all_of(volumes.begin(), volumes.end(), [&](int tag) {
-    const ModelVolume* v = model.volume(tag);
-    return v && hasLayers(v->extrusion) && v->extrusion->layers.recombine;
-  });
-}
-
 ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
   const BoundingBox box = model.boundingBox();
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);

@@ -55,8 +55,4 @@ class ExtrusionMesher {
 // Whether the volume is extruded with layers.
 bool isLayeredExtrusion(const ModelVolume& volume);
 
-// Whether every volume the surface bounds (at least one) is extruded with layers and
-// Recombine: its quadrangles then become faces of hexahedra, not of tetrahedra.
-bool boundsOnlyRecombinedExtrusions(const Model& model, int surfaceTag);
-
 }  // namespace geomesh

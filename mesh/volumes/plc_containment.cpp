@@ -46,8 +46,8 @@ bool boxesOverlap(const BoundingBox& a, const BoundingBox& b) {
          a.min.z <= b.max.z && b.min.z <= a.max.z;
 }
 
-// Whether p lies inside the shells: an odd number of their triangles crossed on the way out.
-// nullopt when every ray tried grazes a triangle.
+}  // namespace
+
 std::optional<bool> insideShells(Vec3 p, const VolumePlc& plc, const std::vector<Vec3>& xyz,
                                  const BoundingBox& shells) {
   const double reach = 2 * distance(shells.min, shells.max) + distance(p, shells.min);
@@ -71,6 +71,8 @@ std::optional<bool> insideShells(Vec3 p, const VolumePlc& plc, const std::vector
   }
   return std::nullopt;
 }
+
+namespace {
 
 std::string near(Vec3 p) {
   return " (near (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +

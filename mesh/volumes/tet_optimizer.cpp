@@ -351,6 +351,8 @@ TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double thresho
   std::vector<char> movable(global.size(), 0);
   for (NodeIndex n : em.nodes)
     if (auto it = local.find(n); it != local.end()) movable[it->second] = 1;
+  for (NodeIndex n : kept.fixedNodes)
+    if (auto it = local.find(n); it != local.end()) movable[it->second] = 0;
   // Kept faces and edges with a node outside the tetrahedra are not among theirs anyway.
   auto at = [&](NodeIndex n) {
     const auto it = local.find(n);

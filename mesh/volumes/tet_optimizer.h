@@ -21,6 +21,7 @@ struct TetOptimizerStats {
 struct KeptInside {
   std::vector<std::array<NodeIndex, 3>> triangles;
   std::vector<std::array<NodeIndex, 2>> segments;
+  std::vector<NodeIndex> fixedNodes = {};  // nodes of the volume that stay where they are
 };
 
 // Improves the tetrahedra of a volume whose quality (gamma) is below `threshold`, by edge

@@ -18,6 +18,7 @@
 #include "mesh/volumes/embedded_conformity.h"
 #include "mesh/volumes/plc_containment.h"
 #include "mesh/volumes/plc_intersections.h"
+#include "mesh/volumes/pyramid_bases.h"
 #include "mesh/volumes/tet_optimizer.h"
 #include "mesh/volumes/volume_plc.h"
 
@@ -70,6 +71,19 @@ void orientShell(std::vector<PlcTriangle>& tris, std::size_t first, std::size_t 
     volume += signedTetVolume(origin, xyz[tris[t][0]], xyz[tris[t][1]], xyz[tris[t][2]]);
   if (volume < 0)
     for (std::size_t t = first; t < last; ++t) std::swap(tris[t][0], tris[t][1]);
+}
+
+// Whether the triangles [first, last) close a region: each of their edges is on two of them.
+bool isClosedShell(const std::vector<PlcTriangle>& tris, std::size_t first, std::size_t last) {
+  std::map<std::pair<int, int>, int> uses;
+  for (std::size_t t = first; t < last; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = tris[t][k], b = tris[t][(k + 1) % 3];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  for (const auto& [edge, count] : uses)
+    if (count != 2) return false;
+  return true;
 }
 
 // A point inside an inner shell (a hole of the volume), just behind its largest triangle: the
@@ -287,6 +301,37 @@ void requireEmbeddedConformity(const ModelVolume& volume, const Mesh& mesh) {
                         defects.front());
 }
 
+// Pyramids on the quadrangles of the shells (see addPyramids), as high as their neighbours
+// allow: at a right-angled edge between two recombined faces, two pyramids of the full height
+// would meet, so lower ones are tried before the boundary is declared crossing itself. Their
+// apexes become nodes of the volume.
+std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
+                                   std::vector<Vec3>& xyz, Mesh& mesh) {
+  if (plc.quads.empty()) return {};
+  constexpr double kHeights[] = {0.4, 0.2, 0.1};
+  for (double height : kHeights) {
+    VolumePlc trial = plc;
+    std::vector<Vec3> places = xyz;
+    std::vector<Pyramid> pyramids = addPyramids(trial, places, volume.tag, height);
+    try {
+      rejectIntersections(volume, trial, places);
+    } catch (const MeshError&) {
+      if (height == kHeights[std::size(kHeights) - 1]) throw;
+      continue;
+    }
+    EntityMesh& em = mesh.entity({3, volume.tag});
+    for (std::size_t i = 0; i < trial.nodes.size(); ++i)
+      if (trial.nodes[i] == kNoNode) {
+        trial.nodes[i] = mesh.addNode(places[i]);
+        em.nodes.push_back(trial.nodes[i]);
+      }
+    plc = std::move(trial);
+    xyz = std::move(places);
+    return pyramids;
+  }
+  return {};
+}
+
 // The embedded surfaces' triangles and curves' segments, in mesh nodes.
 KeptInside keptInside(const VolumePlc& plc) {
   KeptInside kept;
@@ -309,12 +354,15 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
   VolumePlc plc = collectVolumePlc(model, *volume, mesh);
   std::vector<Vec3> xyz;
   for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
+  const std::vector<Pyramid> pyramids = standPyramids(*volume, plc, xyz, mesh);
   rejectIntersections(*volume, plc, xyz);
   rejectEmbeddedOutside(*volume, plc, xyz);
   std::vector<Vec3> holes;
   for (std::size_t s = 1; s < plc.shellStart.size(); ++s) {
     const std::size_t first = plc.shellStart[s], last = plc.shellEndOf(s);
-    if (last == first) continue;  // an empty shell
+    // An empty shell, or one closed only together with the others (the reference takes a
+    // volume's loops as a whole): TetGen carves what no hole point marks from outside in.
+    if (last == first || !isClosedShell(plc.triangles, first, last)) continue;
     orientShell(plc.triangles, first, last, xyz);
     holes.push_back(pointInsideShell(plc.triangles, first, last, xyz));
   }
@@ -329,6 +377,11 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
         output =
             followInteriorSize(*volume, input, plcSizes, interiorSize, options, std::move(output));
       appendTetrahedra(*volume, plc, *output, mesh);
+      if (!pyramids.empty()) {
+        ElementBlock& block = mesh.entity({3, volumeTag}).block(ElementType::Pyramid5);
+        for (const Pyramid& p : pyramids)
+          for (int k : p) block.nodes.push_back(plc.nodes[k]);
+      }
       break;
     }
     if (attempt + 1 == kOrders)
@@ -337,8 +390,11 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
                                           " orders of its nodes (a degenerate configuration)");
   }
   requireEmbeddedConformity(*volume, mesh);
-  if (options.optimize)
-    optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold, keptInside(plc));
+  if (options.optimize) {
+    KeptInside kept = keptInside(plc);
+    for (const Pyramid& p : pyramids) kept.fixedNodes.push_back(plc.nodes[p[4]]);  // apexes
+    optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold, kept);
+  }
 }
 
 }  // namespace geomesh

@@ -83,16 +83,27 @@ class PlcBuilder {
  public:
   PlcBuilder(const ModelVolume& volume, const Mesh& mesh) : id_{3, volume.tag}, mesh_(mesh) {}
 
-  // `what` names the surface in errors: "surface" or "embedded surface".
-  void addSurface(int s, const std::string& what) {
+  // `what` names the surface in errors: "surface" or "embedded surface". Quadrangles are
+  // taken on the shells only (`shell` >= 0), recorded for pyramids.
+  void addSurface(int s, const std::string& what, int shell = -1) {
     const EntityMesh* em = mesh_.find({2, s});
     const ElementBlock* tris = em ? em->findBlock(ElementType::Triangle3) : nullptr;
-    if (!tris || tris->size() == 0)
+    const ElementBlock* quads = em && shell >= 0 ? em->findBlock(ElementType::Quad4) : nullptr;
+    const std::size_t triangleCount = tris ? tris->size() : 0;
+    const std::size_t quadCount = quads ? quads->size() : 0;
+    if (triangleCount + quadCount == 0)
       throw MeshError(id_, what + " " + std::to_string(s) + " has no triangle mesh");
-    if (em->elementCount() != tris->size())
-      throw MeshError(id_,
-                      what + " " + std::to_string(s) + " has elements other than 3-node triangles");
-    for (std::size_t i = 0; i < tris->size(); ++i) {
+    if (em->elementCount() != triangleCount + quadCount)
+      throw MeshError(id_, what + " " + std::to_string(s) + " has elements other than " +
+                               (shell >= 0 ? "3-node triangles and 4-node quadrangles"
+                                           : "3-node triangles"));
+    for (std::size_t i = 0; i < quadCount; ++i) {
+      const auto q = quads->element(i);
+      plc_.quads.push_back({localIndex(q[0]), localIndex(q[1]), localIndex(q[2]), localIndex(q[3])});
+      plc_.quadSurfaceOf.push_back(s);
+      plc_.quadShellOf.push_back(static_cast<std::size_t>(shell));
+    }
+    for (std::size_t i = 0; i < triangleCount; ++i) {
       const auto t = tris->element(i);
       plc_.triangles.push_back({localIndex(t[0]), localIndex(t[1]), localIndex(t[2])});
       plc_.surfaceOf.push_back(s);
@@ -155,11 +166,13 @@ VolumePlc collectVolumePlc(const Model& model, const ModelVolume& volume, const 
   PlcBuilder builder(volume, mesh);
   VolumePlc& plc = builder.plc();
   for (const std::vector<int>& shell : volume.shells) {
+    const int index = static_cast<int>(plc.shellStart.size());
     plc.shellStart.push_back(plc.triangles.size());
-    for (int signedSurface : shell) builder.addSurface(std::abs(signedSurface), "surface");
+    for (int signedSurface : shell) builder.addSurface(std::abs(signedSurface), "surface", index);
   }
   plc.shellEnd = plc.triangles.size();
-  if (plc.shellEnd < 4) throw MeshError({3, volume.tag}, "its boundary has fewer than 4 triangles");
+  if (plc.shellEnd + 2 * plc.quads.size() < 4)
+    throw MeshError({3, volume.tag}, "its boundary has fewer than 4 triangles");
   for (int s : sortedUnique(volume.embeddedSurfaces)) {
     if (!model.surface(s))
       throw MeshError({3, volume.tag}, "embedded surface " + std::to_string(s) + " does not exist");
@@ -221,6 +234,8 @@ void renumberPlc(VolumePlc& plc, std::vector<Vec3>& xyz, std::vector<double>& si
   for (PlcSegment& s : plc.segments)
     for (int& k : s) k = to[k];
   for (int& k : plc.points) k = to[k];
+  for (auto& q : plc.quads)
+    for (int& k : q) k = to[k];
 }
 
 }  // namespace geomesh

@@ -28,6 +28,12 @@ struct VolumePlc {
   std::vector<int> curveOf;  // per segment
   std::vector<int> points;   // local node of each embedded point
   std::vector<int> pointOf;  // per point, its tag
+  // Quadrangles of the shells' surfaces (recombined or layered), which no tetrahedron can
+  // have as a face: addPyramids stands a pyramid on each and replaces it by the pyramid's
+  // four side triangles.
+  std::vector<std::array<int, 4>> quads;
+  std::vector<int> quadSurfaceOf;
+  std::vector<std::size_t> quadShellOf;
 
   bool isEmbedded(std::size_t triangle) const { return triangle >= shellEnd; }
   std::size_t shellEndOf(std::size_t shell) const {
@@ -35,9 +41,10 @@ struct VolumePlc {
   }
 };
 
-// The shells' triangles and the embedded entities' triangles, segments and points of a volume,
-// from their meshes in `mesh`. Throws MeshError naming the volume when one of them has no mesh
-// or one that is not made of 3-node triangles (surfaces) or 2-node lines (curves).
+// The shells' triangles (and quadrangles) and the embedded entities' triangles, segments and
+// points of a volume, from their meshes in `mesh`. Throws MeshError naming the volume when one
+// of them has no mesh or one that is not made of 3-node triangles or 4-node quadrangles
+// (shells), 3-node triangles (embedded surfaces) or 2-node lines (curves).
 VolumePlc collectVolumePlc(const Model& model, const ModelVolume& volume, const Mesh& mesh);
 
 // TetGen adds nodes until no edge is much longer than the size asked for; a Delaunay mesh
