@@ -159,4 +159,12 @@ BoundingBox Model::boundingBox() const {
   return box;
 }
 
+BoundingBox Model::sizeBox() const {
+  BoundingBox box;
+  for (const auto& [tag, p] : points_) box.include(p.xyz);
+  for (const auto& [tag, c] : curves_)
+    if (!c.boxedByPoints) box.include(boundingBox({1, tag}));
+  return box;
+}
+
 }  // namespace geomesh

@@ -104,6 +104,9 @@ struct ModelCurve {
   std::optional<Periodicity> periodic = std::nullopt;
   std::vector<int> embeddedPoints = {};
   std::vector<int> compound = {};  // Compound Curve{..}: the curves meshed together with this one
+  // The built-in kernel's curves count in the model's size box by their points only (an arc
+  // bulging past its ends does not widen it), as the reference measures its models.
+  bool boxedByPoints = false;
 };
 
 struct ModelSurface {
@@ -155,6 +158,9 @@ class Model {
   // Ordered by (dim, tag).
   const std::map<EntityId, PhysicalGroup>& physicalGroups() const { return physicals_; }
 
+  // The box whose diagonal sets the default mesh size: every point, and the curves not
+  // boxedByPoints.
+  BoundingBox sizeBox() const;
   const ModelPoint* point(int tag) const;
   const ModelCurve* curve(int tag) const;
   const ModelSurface* surface(int tag) const;

@@ -158,6 +158,7 @@ void GeoFactory::synchronize(Model& model) const {
     curve.periodic = c.periodic;
     curve.embeddedPoints = c.embeddedPoints;
     curve.compound = c.compound;
+    curve.boxedByPoints = true;
   }
   for (const auto& [tag, s] : surfaces_) {
     ModelSurface surface{tag, s.loops, surfaceGeometry(s), s.embeddedPoints, s.embeddedCurves};

@@ -153,9 +153,7 @@ SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
   rules.factor = options.sizeFactor > 0 ? options.sizeFactor : 1;
   rules.fromPoints = options.sizeFromPoints;
   rules.extendFromBoundary = options.sizeExtendFromBoundary;
-  const BoundingBox box = model.boundingBox();
-  const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
-  rules.defaultSize = diagonal > 0 ? diagonal / 10 : 1;
+  rules.defaultSize = defaultSizeOf(model.sizeBox());
   rules.elementsPerTwoPi = std::max(options.sizeFromCurvature, 0.0);
   rules.minCircleNodes = options.minCircleNodes;
   rules.minCurveNodes = options.minCurveNodes;
@@ -191,6 +189,18 @@ double ownSize(const ModelPoint& p) {
 }
 
 }  // namespace
+
+double defaultSizeOf(const BoundingBox& box) {
+  if (box.empty()) return 1;
+  const Vec3 extent = box.max - box.min;
+  const double diagonal = norm(extent);
+  if (!(diagonal > 0)) return 1;
+  // As the reference measures a model: an x or y extent of zero (a model drawn in the x-z
+  // plane, or along one axis) counts as twice the diagonal.
+  const double x = extent.x > 0 ? extent.x : 2 * diagonal;
+  const double y = extent.y > 0 ? extent.y : 2 * diagonal;
+  return norm(Vec3{x, y, extent.z}) / 10;
+}
 
 std::pair<double, double> SizeRules::curveEndSizes(const ModelPoint& start,
                                                    const ModelPoint& end) const {

@@ -19,11 +19,16 @@ namespace geomesh {
 // each curve, and at each point's own node (the largest curvature of the curves ending there).
 // A point's curvature bound is not interpolated along the curves it bounds: a closed curve
 // would otherwise take the size of its sharpest end all along.
+// The size of points without one: a tenth of the box's diagonal, an x or y extent of zero
+// counting as twice the diagonal (as the reference measures models in the x-z plane or along
+// one axis); 1 for an empty or single-point box.
+double defaultSizeOf(const BoundingBox& box);
+
 struct SizeRules {
   double sizeMin = 0;
   double sizeMax = 1e22;
   double factor = 1;
-  double defaultSize = 1;          // a tenth of the model's bounding box diagonal
+  double defaultSize = 1;          // defaultSizeOf(model.sizeBox())
   bool fromPoints = true;          // else points ask for nothing (sizeMax applies)
   bool extendFromBoundary = true;  // else surface interiors get sizeMax, not boundary sizes
   double elementsPerTwoPi = 0;     // Mesh.MeshSizeFromCurvature; 0: off

@@ -125,15 +125,35 @@ TEST(CurveSizing, EllipseIsRefinedWhereItBendsMost) {
 
 TEST(CurveSizing, SizeOf1e22IsNoSizeAtAll) {
   // Scripts saved by the reference's interface write 1e22 for "no size": such points take the
-  // default size (a tenth of the model's diagonal) as points without a size do.
+  // default size as points without a size do (here, along the x axis only, a tenth of the
+  // diagonal of a 10 x 20 box: the reference's 5 segments).
   PolygonModelBuilder unset, none;
   unset.line(unset.point(0, 0, 1e22), unset.point(10, 0, 1e22));
   none.line(none.point(0, 0, 0), none.point(10, 0, 0));
   const std::size_t expected = segments(meshCurves(none.model, {}), 1);
-  EXPECT_EQ(expected, 10u);
+  EXPECT_EQ(expected, 5u);
   EXPECT_EQ(segments(meshCurves(unset.model, {}), 1), expected);
   const SizeRules rules = SizeRules::from(unset.model, {});
-  EXPECT_NEAR(rules.pointSize(*unset.model.point(1)), 1, 1e-12);
+  EXPECT_NEAR(rules.pointSize(*unset.model.point(1)), std::sqrt(5.0), 1e-12);
+}
+
+TEST(CurveSizing, DefaultSizeFollowsTheReferencesBox) {
+  // Measured on the reference: a tenth of the diagonal; an x or y extent of zero counts as
+  // twice the diagonal (a line along x of length 1 gets 5 segments, along z 4, a model in the
+  // x-z plane 1 x 0.5 a size of 0.25); a zero z extent does not count.
+  auto box = [](Vec3 a, Vec3 b) {
+    BoundingBox box;
+    box.include(a);
+    box.include(b);
+    return box;
+  };
+  EXPECT_NEAR(defaultSizeOf(box({0, 0, 0}, {10, 3, 0})), std::sqrt(109.0) / 10, 1e-12);
+  EXPECT_NEAR(defaultSizeOf(box({0, 0, 0}, {1, 1, 1})), std::sqrt(3.0) / 10, 1e-12);
+  EXPECT_NEAR(defaultSizeOf(box({0, 0, 0}, {1, 0, 0})), std::sqrt(5.0) / 10, 1e-12);
+  EXPECT_NEAR(defaultSizeOf(box({0, 0, 0}, {0, 0, 1})), 0.3, 1e-12);
+  EXPECT_NEAR(defaultSizeOf(box({0, 0, 0}, {1, 0, 0.5})), 0.25, 1e-12);
+  EXPECT_EQ(defaultSizeOf(box({1, 1, 1}, {1, 1, 1})), 1.0);
+  EXPECT_EQ(defaultSizeOf(BoundingBox{}), 1.0);
 }
 
 TEST(CurveSizing, OffMeansNoCurvatureBound) {
