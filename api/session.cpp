@@ -96,9 +96,11 @@ void Session::generate(int dim) {
   synchronize();
   if (meshFromFile_) {
     log_.info("Keeping the mesh read from file: it has no geometry to mesh again");
+    computeHomology(homologyRequests_, model_, mesh_, log_);
     return;
   }
   generateMesh(model_, meshOptions(), dim, mesh_, log_);
+  computeHomology(homologyRequests_, model_, mesh_, log_);
   const int partitions = clampedInteger<int>(options_.number("Mesh.NbPartitions"));
   if (partitions > 0) api::partitionMesh(*this, partitions);
 }
@@ -107,6 +109,7 @@ void Session::clearModel() {
   factories_.clear();
   model_ = Model();
   mesh_ = Mesh();
+  homologyRequests_.clear();
   origins_.clear();
   meshFromFile_ = false;
 }

@@ -17,6 +17,7 @@
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
 #include "mesh/core/mesh_options.h"
+#include "mesh/homology/homology.h"
 #include "stdlib/options.h"
 
 namespace geomesh {
@@ -62,6 +63,9 @@ class Session {
   MeshOptions meshOptions() const;
   // Synchronizes, then meshes up to `dim`; throws MeshError.
   void generate(int dim);
+  // Homology and Cohomology statements: carried out at the end of each generate(), their
+  // bases saved as physical groups of the mesh.
+  std::vector<HomologyRequest>& homologyRequests() { return homologyRequests_; }
   // Forgets every entity, mesh constraint and mesh element (Delete Model; NewModel;).
   void clearModel();
   // Replaces the model and the mesh by those of a mesh file, read by the format its
@@ -92,6 +96,7 @@ class Session {
   FactorySelection factories_;
   Model model_;
   Mesh mesh_;
+  std::vector<HomologyRequest> homologyRequests_;
   std::map<std::string, double> numberOverrides_;
   std::map<std::string, std::string> stringOverrides_;
   struct Origin {

@@ -205,6 +205,16 @@ command:
 | words '(' args_opt ')' ';' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
     c.args = std::move($3); $$ = makeStmt(std::move(c), @1); }
+| words '(' args_opt ')' part ';' {  // Homology(1) {{domain}, {subdomain}};
+    if ($1.size() != 1 || ($1[0] != "Homology" && $1[0] != "Cohomology")) {
+      SourceLocation after = at(@4);  // just after ')', as for any other missing ';'
+      after.line = @4.end.line; after.column = @4.end.column;
+      throw SyntaxError(after, "expected ';' after ')' (found '{')");
+    }
+    CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
+    c.args = std::move($3);
+    auto s = makeExpr(ExprKind::Shape, @5); s->words = c.words; s->parts.push_back(std::move($5));
+    c.shape = std::move(s); $$ = makeStmt(std::move(c), @1); }
 | words '(' args_opt ')' '>' expr ';' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
     c.args = std::move($3); c.redirect = ">"; c.redirectTarget = std::move($6);

@@ -123,6 +123,9 @@ class Interpreter {
   void executeMessage(const ast::CommandStmt& command, const SourceLocation& where);
   void executeSetFactory(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrintf(const ast::CommandStmt& command, const SourceLocation& where);
+  // Homology(dims) {{domain}, {subdomain}}; and Cohomology: requests for the end of meshing
+  // (homology_statements.cpp)
+  void requestHomology(const ast::CommandStmt& command, const SourceLocation& where);
   // entity definitions (geometry_commands.cpp)
   void defineEntity(const ast::CommandStmt& command, const SourceLocation& where);
   void definePoint(const ast::CommandStmt& command, const SourceLocation& where);
