@@ -315,7 +315,12 @@ std::map<int, Periodicity> periodicCurves(const Model& model) {
                                       " of its periodic master " +
                                       surfaceName(surface.periodic->master) +
                                       " is none of its boundary curves");
-      if (slaveCurve != masterCurve && !links.contains(slaveCurve))
+      // A curve already declared periodic keeps its link; so does one whose master the
+      // script made its copy (Periodic Curve{1} = {-3}; then surfaces the other way round):
+      // either way the two curves get matching meshes.
+      const auto reverse = links.find(masterCurve);
+      const bool reversed = reverse != links.end() && reverse->second.master == slaveCurve;
+      if (slaveCurve != masterCurve && !links.contains(slaveCurve) && !reversed)
         links[slaveCurve] = {masterCurve, surface.periodic->affine};
     }
   }
