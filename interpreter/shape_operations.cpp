@@ -315,6 +315,9 @@ void Interpreter::embedEntities(const ast::CommandStmt& command, const SourceLoc
                          command.tail[0].word == "In" && command.tail[0].value;
   const int dim = entityDimension(command.words);
   const int hostDim = embedding ? entityDimension(command.tail[0].value->words) : -1;
+  if (dim >= 0 && command.shape && command.value && command.words.size() == 1)
+    fail(where, "'" + command.words[0] + "{..} = {..};' defines nothing: write " +
+                    command.words[0] + "(tag) = {..};");  // the reference: a syntax error
   if (dim < 0 || hostDim < 0) return unsupportedStatement(command, where);
   const ast::Expr& host = *command.tail[0].value;
   GeometryFactory& geo = session_.factory();
