@@ -123,9 +123,9 @@ std::vector<int> Model::upward(EntityId e) const {
 std::vector<int> Model::physicalTagsOf(EntityId e) const {
   std::vector<int> out;
   for (const auto& [id, group] : physicals_)
-    if (id.dim == e.dim &&
-        std::find(group.entities.begin(), group.entities.end(), e.tag) != group.entities.end())
-      out.push_back(id.tag);
+    if (id.dim == e.dim && std::any_of(group.entities.begin(), group.entities.end(),
+                                       [&](int member) { return std::abs(member) == e.tag; }))
+      out.push_back(id.tag);  // a member given as -tag (reversed) is in the group all the same
   return out;
 }
 

@@ -58,6 +58,7 @@ TEST(GeoFactory, SynchronizeBuildsAdjacencies) {
   addUnitCube(geo);
   geo.addPhysicalGroup(2, 7, "bottom", {1});
   geo.addPhysicalGroup(3, 3, "", {1});
+  geo.addPhysicalGroup(1, 4, "edges", {-9, 2});  // a member given reversed is a member
   Model model;
   geo.synchronize(model);
   EXPECT_EQ(model.points().size(), 8u);
@@ -71,6 +72,8 @@ TEST(GeoFactory, SynchronizeBuildsAdjacencies) {
   EXPECT_EQ(model.upward({1, 1}), (std::vector<int>{1, 3}));
   EXPECT_EQ(model.upward({2, 6}), (std::vector<int>{1}));
   EXPECT_EQ(model.physicalTagsOf({2, 1}), (std::vector<int>{7}));
+  EXPECT_EQ(model.physicalTagsOf({1, 9}), (std::vector<int>{4}));
+  EXPECT_EQ(model.physicalTagsOf({1, 2}), (std::vector<int>{4}));
   EXPECT_EQ(model.physicalGroups().at({2, 7}).name, "bottom");
   EXPECT_EQ(model.point(7)->xyz, (Vec3{1, 1, 1}));
   EXPECT_EQ(model.point(7)->meshSize, 1);
