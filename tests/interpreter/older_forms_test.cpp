@@ -61,6 +61,20 @@ TEST(OlderForms, CircleBackToItsStartIsAWholeCircle) {
   EXPECT_NEAR(half.x, -1, 1e-12);
 }
 
+TEST(OlderForms, SyntaxErrorsInBranchesNotTakenAreNotReached) {
+  // The reference skips the text of a branch it does not take: an error there is none.
+  EXPECT_EQ(printed("a = 1;\nIf (a == 1)\n  Printf(\"taken\");\nElse\n  x = {1, 2 +};\n"
+                    "  If (a) y = 3 EndIf\nEndIf\nIf (a == 2)\n  Point(1) = (0, 0, 0);\n"
+                    "ElseIf (a == 3)\n  z = 1 2;\nEndIf\nPrintf(\"end\");"),
+            "taken\nend\n");
+  // Taken, the branch fails where its error is, with the parser's message.
+  EXPECT_EQ(firstLineOf("a = 1;\nIf (a == 1)\n  z = 1 2;\nEndIf\n"),
+            "test.geo:3:8: error: expected ';' after '1' (found '2')");
+  // Outside any branch, as before.
+  EXPECT_EQ(firstLineOf("z = 1 2;\nIf (0)\nEndIf\n"),
+            "test.geo:1:6: error: expected ';' after '1' (found '2')");
+}
+
 TEST(OlderForms, ZeroAndNegativeTags) {
   EXPECT_EQ(printed("Point(0) = {0, 0, 0}; Point(-1) = {1, 0, 0}; Point(-5) = {2, 0, 0};\n"
                     "Line(0) = {0, -1}; Line(-2) = {1, 2};\n"
