@@ -265,6 +265,16 @@ command:
     c.args.push_back(std::move($2)); c.args.push_back(std::move(slaveCurves));
     c.args.push_back(std::move($7)); c.args.push_back(std::move(masterCurves));
     $$ = makeStmt(std::move(c), @1); }
+| words IDENT part '=' bare part ';' {
+    // Periodic Surface s {curves} = m {curves}; with the tags in variables
+    if ($3.isBlock || $6.isBlock) throw SyntaxError(at(@3), "expected the lists of curves");
+    CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
+    auto slave = makeExpr(ExprKind::Variable, @2); slave->name.base = std::move($2);
+    auto slaveCurves = makeExpr(ExprKind::List, @3); slaveCurves->args = std::move($3.items);
+    auto masterCurves = makeExpr(ExprKind::List, @6); masterCurves->args = std::move($6.items);
+    c.args.push_back(std::move(slave)); c.args.push_back(std::move(slaveCurves));
+    c.args.push_back(std::move($5)); c.args.push_back(std::move(masterCurves));
+    $$ = makeStmt(std::move(c), @1); }
 | words IDENT parts {
     CommandStmt c; c.words = std::move($1); c.colorName = std::move($2);
     auto s = makeExpr(ExprKind::Shape, @1); s->words = c.words; s->parts = std::move($3);
@@ -299,6 +309,7 @@ command:
 // expression there would make the grammar ambiguous).
 periodic_tag:
   NUMBER { $$ = makeExpr(ExprKind::Number, @1); $$->number = $1; }
+| name '[' expr ']' { $$ = grammar::elementOrCall(std::move($1), std::move($3), @1); }
 ;
 
 bare:

@@ -186,6 +186,24 @@ TEST(OlderForms, NearlyPlaneSurfaceWarns) {
             "0.005 off their mean plane); meshed on that plane");
 }
 
+TEST(OlderForms, OlderPeriodicSurfaceFormWithTagsInVariablesAndLists) {
+  const std::string box =
+      "Point(1) = {0, 0, 0, 0.3}; Point(2) = {1, 0, 0, 0.3}; Point(3) = {1, 1, 0, 0.3};\n"
+      "Point(4) = {0, 1, 0, 0.3}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+      "Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+      "e[] = Extrude {0, 0, 1} { Surface{1}; };\n"
+      "b1[] = Boundary{ Surface{1}; }; b2[] = Boundary{ Surface{e[0]}; };\n";
+  for (const char* form : {"Periodic Surface e[0] {b2[]} = 1 {b1[]};\n",
+                           "top = e[0]; bottom = 1; Periodic Surface top {b2[]} = bottom {b1[]};\n"}) {
+    ScriptRun run;
+    run.run(box + form);
+    run.session.synchronize();
+    const auto& top = *run.session.model().surface(26);
+    ASSERT_TRUE(top.periodic.has_value()) << form;
+    EXPECT_EQ(top.periodic->master, 1) << form;
+  }
+}
+
 TEST(OlderForms, PeriodicCurveWithoutTransform) {
   ScriptRun run;
   run.run("Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
