@@ -42,11 +42,13 @@ std::size_t afterParentheses(std::string_view text, std::size_t at) {
   return std::string_view::npos;
 }
 
-// Every branch of every If block of the script, found by its keywords outside comments and
-// strings, as the reference skips the branches it does not take without reading them.
+// Every branch of every If block of the script, and every Macro's body, found by their
+// keywords outside comments and strings: the reference skips the branches it does not take,
+// and the macros until they are called, without reading them.
 std::vector<Branch> conditionalBranches(std::string_view text) {
   std::vector<Branch> branches;
-  std::vector<std::size_t> open;  // per open If: the start of its current branch's body
+  std::vector<std::size_t> open;    // per open If: the start of its current branch's body
+  std::vector<std::size_t> macros;  // per open Macro: the start of its body
   std::size_t i = 0;
   while (i < text.size()) {
     const char c = text[i];
@@ -77,6 +79,13 @@ std::vector<Branch> conditionalBranches(std::string_view text) {
       } else if (word == "EndIf" && !open.empty()) {
         branches.push_back({open.back(), start});
         open.pop_back();
+      } else if (word == "Macro" || word == "Function") {
+        // The body starts on the line after the macro's name.
+        const std::size_t line = text.find('\n', i);
+        if (line != std::string_view::npos) macros.push_back(line + 1);
+      } else if (word == "Return" && !macros.empty()) {
+        branches.push_back({macros.back(), start});
+        macros.pop_back();
       }
     } else {
       ++i;

@@ -70,6 +70,10 @@ TEST(OlderForms, SyntaxErrorsInBranchesNotTakenAreNotReached) {
   // Taken, the branch fails where its error is, with the parser's message.
   EXPECT_EQ(firstLineOf("a = 1;\nIf (a == 1)\n  z = 1 2;\nEndIf\n"),
             "test.geo:3:8: error: expected ';' after '1' (found '2')");
+  // Nor in a macro never called; called, it fails at the error.
+  EXPECT_EQ(printed("Macro Unused\n  x = {1, 2 +};\nReturn\nPrintf(\"end\");"), "end\n");
+  EXPECT_EQ(firstLineOf("Macro Bad\n  z = 1 2;\nReturn\nCall Bad;\n"),
+            "test.geo:2:8: error: expected ';' after '1' (found '2')");
   // Outside any branch, as before.
   EXPECT_EQ(firstLineOf("z = 1 2;\nIf (0)\nEndIf\n"),
             "test.geo:1:6: error: expected ';' after '1' (found '2')");
