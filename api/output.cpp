@@ -60,10 +60,9 @@ MeshWriteOptions writeOptions(const OptionRegistry& options) {
 
 std::string unsavedEntities(const Model& model, const Mesh& mesh) {
   static constexpr const char* kKinds[] = {"point", "curve", "surface", "volume"};
-  const std::set<EntityId> grouped = physicalEntities(model);
+  const std::set<EntityId> grouped = presentPhysicalEntities(model, mesh);
   std::set<int> groupedDims;
-  for (EntityId id : grouped)
-    if (model.contains(id) || mesh.find(id)) groupedDims.insert(id.dim);
+  for (EntityId id : grouped) groupedDims.insert(id.dim);
   std::vector<std::string> names;
   std::size_t elements = 0;
   for (const auto& [id, em] : mesh.entities()) {

@@ -50,11 +50,15 @@ std::set<EntityId> physicalEntities(const Model& model) {
   return out;
 }
 
-bool savesPhysicalsOnly(const Model& model, const Mesh& mesh, bool saveAll) {
-  if (saveAll) return false;
+std::set<EntityId> presentPhysicalEntities(const Model& model, const Mesh& mesh) {
+  std::set<EntityId> present;
   for (EntityId e : physicalEntities(model))
-    if (model.contains(e) || mesh.find(e)) return true;
-  return false;
+    if (model.contains(e) || mesh.find(e)) present.insert(e);
+  return present;
+}
+
+bool savesPhysicalsOnly(const Model& model, const Mesh& mesh, bool saveAll) {
+  return !saveAll && !presentPhysicalEntities(model, mesh).empty();
 }
 
 MshContent selectMshContent(const Model& model, const Mesh& mesh, bool saveAll) {

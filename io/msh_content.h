@@ -39,6 +39,8 @@ struct MshContent {
 
 // The entities that physical groups of the model hold.
 std::set<EntityId> physicalEntities(const Model& model);
+// Those of them that the model or the mesh has (a group may name an entity that is missing).
+std::set<EntityId> presentPhysicalEntities(const Model& model, const Mesh& mesh);
 // Whether only the elements of physical groups are saved: not with saveAll, nor when no
 // entity of the model or the mesh is in a group (the groups named only entities missing),
 // as the reference decides.

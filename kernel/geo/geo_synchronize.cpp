@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -140,20 +141,22 @@ std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface
 void GeoFactory::synchronize(Model& model) const {
   // A closed B-spline is periodic and passes through none of its control points: the point
   // that closes it is placed where the curve starts (and ends).
+  std::map<int, std::shared_ptr<const CurveGeometry>> geometries;
   std::map<int, Vec3> closingPoints;
-  for (const auto& [tag, c] : curves_)
+  for (const auto& [tag, c] : curves_) {
+    auto geometry = curveGeometry(c);
     if (c.kind == CurveKind::BSpline && c.knots.empty() && c.points.size() >= 4 &&
-        c.start() == c.end()) {
-      const auto geometry = curveGeometry(c);
+        c.start() == c.end())
       closingPoints.emplace(c.start(), geometry->point(geometry->range().min));
-    }
+    geometries.emplace(tag, std::move(geometry));
+  }
   for (const auto& [tag, p] : points_) {
     ModelPoint& point = model.addPoint(p);
     if (auto moved = closingPoints.find(tag); moved != closingPoints.end())
       point.xyz = moved->second;
   }
   for (const auto& [tag, c] : curves_) {
-    ModelCurve& curve = model.addCurve(ModelCurve{tag, c.start(), c.end(), curveGeometry(c)});
+    ModelCurve& curve = model.addCurve(ModelCurve{tag, c.start(), c.end(), geometries.at(tag)});
     curve.extrusion = c.extrusion;
     curve.periodic = c.periodic;
     curve.embeddedPoints = c.embeddedPoints;

@@ -2,6 +2,7 @@
 #include "mesh/homology/homology.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 #include <set>
@@ -42,10 +43,10 @@ bool hasPhysicalTag(const Model& model, int tag) {
   return false;
 }
 
-std::string describeSizes(const CellComplex& complex) {
-  return std::to_string(complex.count(3)) + " volumes, " + std::to_string(complex.count(2)) +
-         " faces, " + std::to_string(complex.count(1)) + " edges and " +
-         std::to_string(complex.count(0)) + " vertices";
+// "v volumes, f faces, e edges and n vertices" for cell counts by dimension.
+std::string describeSizes(const std::array<std::size_t, 4>& cells) {
+  return std::to_string(cells[3]) + " volumes, " + std::to_string(cells[2]) + " faces, " +
+         std::to_string(cells[1]) + " edges and " + std::to_string(cells[0]) + " vertices";
 }
 
 int meshDimension(const Mesh& mesh) {
@@ -138,16 +139,16 @@ void computeHomology(std::span<const HomologyRequest> requests, Model& model, Me
   for (const auto& [key, group] : groups) {
     const std::string text = domainText(*group.front());
     const CellComplex complex = requestComplex(*group.front(), model, mesh, log);
-    log.info("Cell complex of domain (" + text + "): " + describeSizes(complex));
+    log.info("Cell complex of domain (" + text + "): " +
+             describeSizes({complex.count(0), complex.count(1), complex.count(2),
+                            complex.count(3)}));
     std::optional<HomologyBases> cached[2];
     for (const HomologyRequest* r : group) {
       auto& bases = cached[r->kind == HomologyKind::Homology ? 0 : 1];
       if (!bases) {
         bases = computeHomologyBases(complex, r->kind);
-        const auto& left = bases->reducedCells;
         log.info("Reduced for " + std::string(spacesWord(r->kind)) + " to " +
-                 std::to_string(left[3]) + " volumes, " + std::to_string(left[2]) + " faces, " +
-                 std::to_string(left[1]) + " edges and " + std::to_string(left[0]) + " vertices");
+                 describeSizes(bases->reducedCells));
         logRanks(*bases, text, log);
       }
       saveBases(*r, *bases, complex, model, mesh, log);

@@ -304,15 +304,20 @@ void requireEmbeddedConformity(const ModelVolume& volume, const Mesh& mesh) {
 // Pyramids on the quadrangles of the shells (see addPyramids), as high as their neighbours
 // allow: at a right-angled edge between two recombined faces, two pyramids of the full height
 // would meet, so lower ones are tried before the boundary is declared crossing itself. Their
-// apexes become nodes of the volume.
+// apexes become nodes of the volume. The complex that comes out is checked for crossings
+// (rejectIntersections), with or without pyramids.
 std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
                                    std::vector<Vec3>& xyz, Mesh& mesh) {
-  if (plc.quads.empty()) return {};
+  if (plc.quads.empty()) {
+    rejectIntersections(volume, plc, xyz);
+    return {};
+  }
+  const std::vector<Vec3> inward = inwardNormals(plc, xyz, volume.tag);
   constexpr double kHeights[] = {0.4, 0.2, 0.1};
   for (double height : kHeights) {
     VolumePlc trial = plc;
     std::vector<Vec3> places = xyz;
-    std::vector<Pyramid> pyramids = addPyramids(trial, places, volume.tag, height);
+    std::vector<Pyramid> pyramids = addPyramids(trial, places, inward, height);
     try {
       rejectIntersections(volume, trial, places);
     } catch (const MeshError&) {
@@ -355,7 +360,6 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
   std::vector<Vec3> xyz;
   for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
   const std::vector<Pyramid> pyramids = standPyramids(*volume, plc, xyz, mesh);
-  rejectIntersections(*volume, plc, xyz);
   rejectEmbeddedOutside(*volume, plc, xyz);
   std::vector<Vec3> holes;
   for (std::size_t s = 1; s < plc.shellStart.size(); ++s) {
