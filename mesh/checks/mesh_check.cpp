@@ -17,6 +17,12 @@ namespace geomesh {
 namespace {
 
 constexpr std::size_t kMaxProblemsPerCheck = 10;
+// A corner whose edges span less than this fraction of the volume of the box they would span
+// at right angles is flat: its element has a scaled Jacobian (SICN) of about that size.
+constexpr double kFlatCorner = 1e-10;
+// A triangle whose doubled area is below this fraction of the sum of its squared edge lengths
+// is flat (its SICN is about 3.5 times that fraction).
+constexpr double kFlatTriangle = 1e-12;
 
 std::string nodeName(NodeIndex n) {
   return "node " + std::to_string(n + 1);
@@ -80,6 +86,11 @@ class Checker {
     for (const auto& [tag, surface] : model_.surfaces()) checkSurface(surface);
     checkVolumes();
     checkPeriodicLinks();
+    return std::move(report_);
+  }
+
+  MeshCheckReport runVolumes() {
+    checkVolumes();
     return std::move(report_);
   }
 
@@ -289,7 +300,7 @@ class Checker {
         reference = cross(d.du, d.dv);
       }
       const double scale = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
-      if (!(dot(normal, reference) > 0) || !(norm(normal) > 1e-14 * scale)) {
+      if (!(dot(normal, reference) > 0) || !(norm(normal) > kFlatTriangle * scale)) {
         if (reported++ < kMaxProblemsPerCheck)
           problem(id, "triangle " + std::to_string(e + 1) + " is inverted or flat");
       }
@@ -378,11 +389,13 @@ class Checker {
   }
 
   // The Jacobian at every corner: the triple product of the corner's three edges, taken in
-  // the order that is positive for the reference element of the MSH format.
+  // the order that is positive for the reference element of the MSH format, and not small
+  // against the product of their lengths (a corner flat to rounding counts as flat).
   bool positiveCorners(ElementType type, std::span<const NodeIndex> n) const {
     auto positive = [&](int corner, int a, int b, int c) {
       const Vec3 o = mesh_.node(n[corner]);
-      return dot(cross(mesh_.node(n[a]) - o, mesh_.node(n[b]) - o), mesh_.node(n[c]) - o) > 0;
+      const Vec3 ea = mesh_.node(n[a]) - o, eb = mesh_.node(n[b]) - o, ec = mesh_.node(n[c]) - o;
+      return dot(cross(ea, eb), ec) > kFlatCorner * norm(ea) * norm(eb) * norm(ec);
     };
     switch (type) {
       case ElementType::Tet4: return positive(0, 1, 2, 3);
@@ -549,6 +562,10 @@ std::string MeshCheckReport::summary() const {
 
 MeshCheckReport checkMesh(const Model& model, const Mesh& mesh) {
   return Checker(model, mesh).run();
+}
+
+MeshCheckReport checkVolumeElements(const Model& model, const Mesh& mesh) {
+  return Checker(model, mesh).runVolumes();
 }
 
 }  // namespace geomesh

@@ -31,7 +31,7 @@ struct MeshCheckReport {
 //    edges exactly the segments of the boundary curves (embedded curves: two triangles each);
 //    triangles only use nodes of the surface and its closure; nodes on the surface;
 //  - volumes: tetrahedra, prisms, pyramids and hexahedra with a positive Jacobian at every
-//    corner; in volumes with any but tetrahedra, each element face shared by two elements or
+//    corner, not small against the product of the corner's edge lengths; in volumes with any but tetrahedra, each element face shared by two elements or
 //    equal to a triangle or quadrangle of a boundary surface, and each of those a face of an
 //    element (without known boundary surfaces, as read from MSH 2.2: by one or two elements);
 //  - entities embedded in a volume: each triangle of an embedded surface a face of two
@@ -41,5 +41,9 @@ struct MeshCheckReport {
 //  - high-order elements: every check above on their corners (the first vertexCount nodes), the
 //    other nodes held like any node; elements sharing an edge have the same nodes inside it.
 MeshCheckReport checkMesh(const Model& model, const Mesh& mesh);
+
+// The volume checks of checkMesh alone: what meshing volumes is checked by before the mesh is
+// kept, so that no flat or inverted element is ever written.
+MeshCheckReport checkVolumeElements(const Model& model, const Mesh& mesh);
 
 }  // namespace geomesh

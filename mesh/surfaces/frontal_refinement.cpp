@@ -58,8 +58,9 @@ Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
 class FrontalRefiner {
  public:
   FrontalRefiner(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
-                 const SurfaceMetric* metric, const WorkPlaneSize* field, Placement placement)
-      : tri_(tri), inside_(inside), metric_(metric), field_(field),
+                 const SurfaceMetric* metric, const WorkPlaneSize* field,
+                 const WorkPlaneSize* bound, Placement placement)
+      : tri_(tri), inside_(inside), metric_(metric), field_(field), bound_(bound),
         placement_(placement),
         idealRadius_(placement == Placement::FrontalQuads ? 1 / kSqrt2 : 1 / kSqrt3) {}
 
@@ -81,16 +82,41 @@ class FrontalRefiner {
     }
     if (field_)
       for (std::uint32_t v = firstNew; v < tri_.pointCount(); ++v)
-        tri_.setSize(v, std::min(tri_.size(v), (*field_)(tri_.point(v))));
+        tri_.setSize(v, std::min(tri_.size(v), fieldAt(v)));
+    if (bound_)
+      for (std::uint32_t v = firstNew; v < tri_.pointCount(); ++v)
+        tri_.setSize(v, std::min(tri_.size(v), (*bound_)(tri_.point(v))));
   }
 
  private:
   Vec2 p(std::uint32_t t, int i) const { return tri_.point(tri_.vertex(3 * t + i)); }
+  // The field's size at vertex v, evaluated once.
+  double fieldAt(std::uint32_t v) const {
+    if (v >= fieldSizes_.size()) fieldSizes_.resize(tri_.pointCount(), -1);
+    if (fieldSizes_[v] < 0) fieldSizes_[v] = (*field_)(tri_.point(v));
+    return fieldSizes_[v];
+  }
+  // The smaller of the means, over the vertices, of the extended sizes and of the field's:
+  // the field is seen at vertices only, so a zone of small sizes no vertex falls in is only
+  // refined once a point lands there (as the reference does).
+  double meanSize(std::span<const std::uint32_t> vertices) const {
+    double extended = 0, field = 0;
+    for (std::uint32_t v : vertices) {
+      extended += tri_.size(v);
+      if (field_) field += fieldAt(v);
+    }
+    return (field_ ? std::min(extended, field) : extended) / static_cast<double>(vertices.size());
+  }
+  double boundedAt(double size, Vec2 x) const {
+    return bound_ ? std::min(size, (*bound_)(x)) : size;
+  }
+  Vec2 middle(std::uint32_t a, std::uint32_t b) const {
+    return {0.5 * (tri_.point(a).u + tri_.point(b).u), 0.5 * (tri_.point(a).v + tri_.point(b).v)};
+  }
   double targetSize(std::uint32_t t) const {
-    const double mean = (tri_.size(tri_.vertex(3 * t)) + tri_.size(tri_.vertex(3 * t + 1)) +
-                         tri_.size(tri_.vertex(3 * t + 2))) /
-                        3;
-    return field_ ? std::min(mean, (*field_)(centroid(t))) : mean;
+    const std::array<std::uint32_t, 3> v{tri_.vertex(3 * t), tri_.vertex(3 * t + 1),
+                                         tri_.vertex(3 * t + 2)};
+    return bound_ ? std::min(meanSize(v), (*bound_)(centroid(t))) : meanSize(v);
   }
   // Lengths near x on the surface are Euclidean lengths after this map.
   MetricFrame frameAt(Vec2 x) const {
@@ -158,11 +184,8 @@ class FrontalRefiner {
     const Vec2 inward{-ab.v / (2 * half), ab.u / (2 * half)};
     const Vec2 center = circumcenter(f.apply(p(t, 0)), f.apply(p(t, 1)), f.apply(p(t, 2)));
     const double q = std::max(length(sub(center, mid)), 1e-300);
-    double target = 0.5 * (tri_.size(va) + tri_.size(vb));
-    if (field_)
-      target = std::min(target, (*field_)({0.5 * (tri_.point(va).u + tri_.point(vb).u),
-                                           0.5 * (tri_.point(va).v + tri_.point(vb).v)}));
-    target /= kSqrt3;
+    const std::array<std::uint32_t, 2> ends{va, vb};
+    const double target = boundedAt(meanSize(ends), middle(va, vb)) / kSqrt3;
     const double rho = std::min(std::max(target, half), (half * half + q * q) / (2 * q));
     const double d = rho + std::sqrt(std::max(rho * rho - half * half, 0.0));
     return f.invert({mid.u + d * inward.u, mid.v + d * inward.v});
@@ -229,8 +252,8 @@ class FrontalRefiner {
     const Vec2 cross{cross_[va].u + cross_[vb].u, cross_[va].v + cross_[vb].v};
     const double angle = cross.u == 0 && cross.v == 0 ? std::atan2(ab.v, ab.u)
                                                       : std::atan2(cross.v, cross.u) / 4;
-    double target = 0.5 * (tri_.size(va) + tri_.size(vb));
-    if (field_) target = std::min(target, (*field_)(middle));
+    const std::array<std::uint32_t, 2> ends{va, vb};
+    const double target = boundedAt(meanSize(ends), middle);
     const auto maxNorm = [angle](Vec2 d) {
       const double c = std::cos(angle), s = std::sin(angle);
       return std::max(std::abs(c * d.u + s * d.v), std::abs(-s * d.u + c * d.v));
@@ -290,22 +313,31 @@ class FrontalRefiner {
     return {centroid(t), t};
   }
 
+  // One new point for t: at its refinement point, or in front of its front edge. A triangle
+  // whose point cannot go in is kept as it is without waking its neighbours, so that a zone
+  // of much smaller sizes which the front first meets at a single vertex is not filled from
+  // there (the reference's frontal mesher behaves so).
   bool advanceFront(std::uint32_t t) {
-    Vec2 x;
-    std::uint32_t found = kNone;
     if (placement_ == Placement::Circumcenter) {
-      std::tie(x, found) = refinementPoint(t);
-    } else {
-      const std::uint32_t corner = frontCorner(t);
-      if (corner == kNone) return false;
-      x = placement_ == Placement::FrontalQuads ? quadPoint(t, corner) : frontPoint(t, corner);
-      found = tri_.locate(x, t);
+      const auto [x, found] = refinementPoint(t);
+      return insert(x, found);
     }
+    const std::uint32_t corner = frontCorner(t);
+    if (corner == kNone) return false;
+    const Vec2 x =
+        placement_ == Placement::FrontalQuads ? quadPoint(t, corner) : frontPoint(t, corner);
+    return insert(x, tri_.locate(x, t));
+  }
+
+  // Inserts x, found in triangle `found`, unless it falls outside the domain or too close to
+  // a vertex or a boundary edge.
+  bool insert(Vec2 x, std::uint32_t found) {
     if (found == kNone || !inside_[found]) return false;
     // The triangulation keeps the sizes extended from the boundary, so that a field's small
     // sizes do not spread by interpolation; the field applies where a size is used.
     const double extended = interpolatedSize(found, x);
-    const double size = field_ ? std::min(extended, (*field_)(x)) : extended;
+    const double atX = field_ ? (*field_)(x) : extended;
+    const double size = boundedAt(std::min(extended, atX), x);
     if (!(size > 0)) return false;
     const std::uint32_t v = tri_.addPoint(x);
     if (!findCavity(v, found, x) || tooClose(tri_.cavityBoundary(), x, size)) {
@@ -313,6 +345,10 @@ class FrontalRefiner {
       return false;
     }
     tri_.setSize(v, extended);
+    if (field_) {
+      fieldSizes_.resize(tri_.pointCount(), -1);
+      fieldSizes_[v] = atX;
+    }
     if (placement_ == Placement::FrontalQuads) cross_.push_back(interpolatedCross(found, x));
     tri_.commitCavity(v);
     updateAfterInsertion();
@@ -339,9 +375,11 @@ class FrontalRefiner {
   std::vector<std::uint8_t>& inside_;
   const SurfaceMetric* metric_;
   const WorkPlaneSize* field_;
+  const WorkPlaneSize* bound_;
   Placement placement_;
   double idealRadius_;  // circumradius of the ideal triangle of unit size
   std::vector<Vec2> cross_;
+  mutable std::vector<double> fieldSizes_;  // the field's size at each vertex; -1: not yet
   std::vector<State> state_;
   std::vector<std::uint32_t> stamp_;
   std::vector<HeapEntry> heap_;
@@ -351,20 +389,23 @@ class FrontalRefiner {
 
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                    const SurfaceMetric* metric,
-                   const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, metric, field, Placement::Frontal).run();
+                   const WorkPlaneSize* field,
+                   const WorkPlaneSize* bound) {
+  FrontalRefiner(tri, inside, metric, field, bound, Placement::Frontal).run();
 }
 
 void refineFrontalQuads(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                         const SurfaceMetric* metric,
-                        const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, metric, field, Placement::FrontalQuads).run();
+                        const WorkPlaneSize* field,
+                        const WorkPlaneSize* bound) {
+  FrontalRefiner(tri, inside, metric, field, bound, Placement::FrontalQuads).run();
 }
 
 void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                     const SurfaceMetric* metric,
-                    const WorkPlaneSize* field) {
-  FrontalRefiner(tri, inside, metric, field, Placement::Circumcenter).run();
+                    const WorkPlaneSize* field,
+                    const WorkPlaneSize* bound) {
+  FrontalRefiner(tri, inside, metric, field, bound, Placement::Circumcenter).run();
 }
 
 }  // namespace geomesh

@@ -24,11 +24,15 @@ using WorkPlaneSize = std::function<double(Vec2)>;
 // from the boundary inwards.
 // With a metric (curved surfaces), lengths, circumradii and point placement are measured on
 // the surface rather than in the work plane.
-// With `field` (a background size field, given at work-plane points), the target size at a
-// point is the smaller of the interpolated one and the field's.
+// With `field` (a background size field, given at work-plane points), the target size of a
+// triangle or an edge is the smaller of the means, over its vertices, of the interpolated sizes
+// and of the field's: the field is seen at vertices only, as the reference sees it, so a zone
+// of much smaller sizes between vertices is only refined once a vertex falls in it. `bound`
+// (sizes that must hold for the mesh to be valid, such as a few elements per turn of a tight
+// bend) is seen wherever a size is used: at a triangle's centroid, an edge's midpoint.
 void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                    const SurfaceMetric* metric = nullptr,
-                   const WorkPlaneSize* field = nullptr);
+                   const WorkPlaneSize* field = nullptr, const WorkPlaneSize* bound = nullptr);
 
 // Frontal-Delaunay for quadrangles (Mesh.Algorithm 8): the same front, but the ideal
 // triangle is the right isosceles one with legs of the target size, placed along a cross
@@ -36,13 +40,14 @@ void refineFrontal(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
 // make square cells for recombination.
 void refineFrontalQuads(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                         const SurfaceMetric* metric = nullptr,
-                        const WorkPlaneSize* field = nullptr);
+                        const WorkPlaneSize* field = nullptr,
+                        const WorkPlaneSize* bound = nullptr);
 
 // Delaunay refinement (Mesh.Algorithm 5): the same acceptance test, but every bad triangle
 // is refined, worst first, by inserting its circumcentre (in the surface's metric), or its
 // centroid when the circumcentre lies outside the domain.
 void refineDelaunay(Triangulation2D& tri, std::vector<std::uint8_t>& inside,
                     const SurfaceMetric* metric = nullptr,
-                    const WorkPlaneSize* field = nullptr);
+                    const WorkPlaneSize* field = nullptr, const WorkPlaneSize* bound = nullptr);
 
 }  // namespace geomesh

@@ -19,7 +19,8 @@ PlanarMesh domainMesh(SurfaceInterior& s) {
 }
 
 PlanarMesh meshAdapt(SurfaceInterior& s) {
-  return adaptMesh(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric, s.field);
+  return adaptMesh(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric,
+                   s.fieldAndBound);
 }
 
 PlanarMesh initialMeshOnly(SurfaceInterior& s) {
@@ -27,13 +28,13 @@ PlanarMesh initialMeshOnly(SurfaceInterior& s) {
 }
 
 PlanarMesh delaunay(SurfaceInterior& s) {
-  refineDelaunay(s.tri, s.inside, s.metric, s.field);
+  refineDelaunay(s.tri, s.inside, s.metric, s.field, s.bound);
   smoothTriangulation(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric);
   return domainMesh(s);
 }
 
 PlanarMesh frontalDelaunay(SurfaceInterior& s) {
-  refineFrontal(s.tri, s.inside, s.metric, s.field);
+  refineFrontal(s.tri, s.inside, s.metric, s.field, s.bound);
   smoothTriangulation(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric);
   return domainMesh(s);
 }
@@ -41,7 +42,7 @@ PlanarMesh frontalDelaunay(SurfaceInterior& s) {
 // Plain smoothing would pull the square cells out of shape: it may not lower the worst
 // quality.
 PlanarMesh frontalDelaunayQuads(SurfaceInterior& s) {
-  refineFrontalQuads(s.tri, s.inside, s.metric, s.field);
+  refineFrontalQuads(s.tri, s.inside, s.metric, s.field, s.bound);
   smoothTriangulation(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric,
                       SmoothingGuard::WorstQuality);
   return domainMesh(s);

@@ -18,7 +18,8 @@ namespace geomesh {
 // work plane, with the target size at each vertex (Triangulation2D::size, extended from the
 // boundary), the triangles of the domain flagged in `inside`. Vertices from `firstMovable` on may
 // move; the others are boundary and embedded nodes. `metric` is null on planes; `field` is the
-// background size field, if any.
+// background size field (with curvature sizes), if any, and `bound` the sizes that keep
+// elements from wrapping round tight bends, if any: see refineFrontal for how each is seen.
 struct SurfaceInterior {
   Triangulation2D& tri;
   std::vector<std::uint8_t>& inside;
@@ -26,6 +27,8 @@ struct SurfaceInterior {
   int smoothingPasses;
   const SurfaceMetric* metric;
   const WorkPlaneSize* field;
+  const WorkPlaneSize* bound;
+  const WorkPlaneSize* fieldAndBound;  // the smaller of the two; null if both are
 };
 
 // One Mesh.Algorithm value. `mesh` is null for the algorithms that are recognised but not

@@ -443,11 +443,15 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   const WorkPlaneSize field = [&](Vec2 work) {
     const Vec2 uv = frame.toParam(work);
     double size = withField ? fields->at(g.point(uv), id) : rules.sizeMax;
-    if (!withCurvature && !withBend) return rules.finish(size);
-    const double k = surfaceCurvature(g, uv);
-    if (withCurvature) size = std::min(size, rules.curvatureSize(k));
-    // The bend bound holds even below Mesh.MeshSizeMin: a valid mesh comes first.
-    return std::min(rules.finish(size), withBend ? bendSize(k, largest) : 1e22);
+    if (withCurvature) size = std::min(size, rules.curvatureSize(surfaceCurvature(g, uv)));
+    return rules.finish(size);
+  };
+  // The bend bound holds even below Mesh.MeshSizeMin: a valid mesh comes first.
+  const WorkPlaneSize bend = [&](Vec2 work) {
+    return bendSize(surfaceCurvature(g, frame.toParam(work)), largest);
+  };
+  const WorkPlaneSize both = [&](Vec2 work) {
+    return withField || withCurvature ? std::min(field(work), bend(work)) : bend(work);
   };
   for (std::size_t k = 0; k < in.seeds.size(); ++k)
     tri.setSize(firstSeed(in) + static_cast<std::uint32_t>(k), in.seedSize);
@@ -455,9 +459,14 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   // vanishes along a pole, would slide them round the turn.
   const std::uint32_t firstMovable =
       firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
-  SurfaceInterior interior{tri, inside, firstMovable, smoothingPasses,
+  SurfaceInterior interior{tri,
+                           inside,
+                           firstMovable,
+                           smoothingPasses,
                            g.isPlane() ? nullptr : &metric,
-                           withField || withCurvature || withBend ? &field : nullptr};
+                           withField || withCurvature ? &field : nullptr,
+                           withBend ? &bend : nullptr,
+                           withBend ? &both : (withField || withCurvature ? &field : nullptr)};
   const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);

@@ -118,5 +118,23 @@ TEST(MeshCheck, InvertedTetrahedronIsReported) {
   EXPECT_FALSE(f.reports(r, {3, 1}, "tetrahedron 2 "));
 }
 
+// A tetrahedron flat to rounding (apex 1e-13 above its base, positive but of scaled Jacobian
+// about 1e-13) is refused like an inverted one; one of ordinary height is not.
+TEST(MeshCheck, TetrahedronFlatToRoundingIsReported) {
+  for (const double height : {1e-13, 1e-3}) {
+    Fixture f;
+    const auto t = f.triangles().element(0);
+    const Vec3 a = f.mesh.node(t[0]), b = f.mesh.node(t[1]), c = f.mesh.node(t[2]);
+    const Vec3 centre = (a + b + c) / 3;
+    const NodeIndex apex = f.mesh.addNode({centre.x, centre.y, height});
+    EntityMesh& volume = f.mesh.entity({3, 1});
+    volume.nodes.push_back(apex);
+    volume.block(ElementType::Tet4).nodes = {t[0], t[1], t[2], apex};
+    const MeshCheckReport r = checkVolumeElements(f.builder.model, f.mesh);
+    EXPECT_EQ(f.reports(r, {3, 1}, "tetrahedron 1 has a non-positive Jacobian"), height < 1e-6)
+        << height << ": " << r.summary();
+  }
+}
+
 }  // namespace
 }  // namespace geomesh
