@@ -279,7 +279,8 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     }
     extruded.meshVolumes(mesh);
     const MeshCheckReport report = checkVolumeElements(model, mesh);
-    if (!report.ok()) throw MeshError(report.problems.front().entity, report.problems.front().message);
+    if (!report.ok())
+      throw MeshError(report.problems.front().entity, report.problems.front().message);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
   }
   if (options.elementOrder > 1 && dim >= 1) raiseOrder(model, options, mesh, log);
