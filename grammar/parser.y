@@ -486,6 +486,9 @@ primary:
   NUMBER { $$ = makeExpr(ExprKind::Number, @1); $$->number = $1; }
 | STRING { $$ = makeExpr(ExprKind::String, @1); $$->text = std::move($1); }
 | '(' expr ')' { $$ = std::move($2); }
+| '(' expr ',' args ')' {  // (x, y, z): a list in parentheses, as Point(1) = (0, 1, 0);
+    $$ = makeExpr(ExprKind::List, @1); $$->args.push_back(std::move($2));
+    for (auto& arg : $4) $$->args.push_back(std::move(arg)); }
 | name { $$ = makeExpr(ExprKind::Variable, @1); $$->name = std::move($1); }
 | name '[' ']' { $$ = makeExpr(ExprKind::WholeList, @1); $$->name = std::move($1); }
 | name '[' expr ']' { $$ = grammar::elementOrCall(std::move($1), std::move($3), @1); }

@@ -39,6 +39,14 @@ TEST(OlderForms, RecombineWithAValueInsideAnExtrusion) {
             "8 4\n");
 }
 
+// A list may be written in parentheses where it has two items or more: Point(2) = (1, 2, 0);
+TEST(OlderForms, ListsInParentheses) {
+  EXPECT_EQ(printed("Point(2) = (1, 2, 0); p() = Point{2}; Printf(\"%g %g %g\", p(0), p(1), p(2));"),
+            "1 2 0\n");
+  EXPECT_EQ(printed("x() = (1, 2) + 1; Printf(\"%g %g\", x(0), x(1));"), "2 3\n");
+  EXPECT_EQ(printed("x = (1 + 2) * 2; Printf(\"%g\", x);"), "6\n");
+}
+
 TEST(OlderForms, SingleQuotedStrings) {
   EXPECT_EQ(printed("s = 'wall'; t = 'it\\'s'; Printf(\"%s %s %g\", s, t, StrLen('ab'));"),
             "wall it's 2\n");
