@@ -147,7 +147,7 @@ TEST(Parser, MissingSemicolonPointsAfterThePreviousToken) {
 }
 
 TEST(Parser, UnexpectedTokenNamesWhatWasExpected) {
-  EXPECT_EQ(syntaxError("a = (1 + 2;"), "1:11: unexpected ';', expected ')'");
+  EXPECT_EQ(syntaxError("a = (1 + 2;"), "1:11: unexpected ';', expected ')' or ','");
   EXPECT_EQ(syntaxError("a = * 2;"), "1:5: unexpected '*', expected an expression");
 }
 

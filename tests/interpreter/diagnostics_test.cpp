@@ -19,7 +19,7 @@ TEST(Diagnostics, TabsAreKeptInTheCaretLine) {
 
 TEST(Diagnostics, SyntaxErrorsBecomeScriptErrors) {
   EXPECT_EQ(errorOf("a = 1;\nb = (2;\n"),
-            "test.geo:2:7: error: unexpected ';', expected ')'\nb = (2;\n      ^");
+            "test.geo:2:7: error: unexpected ';', expected ')' or ','\nb = (2;\n      ^");
   EXPECT_EQ(errorOf("a = 1\nb = 2;"),
             "test.geo:1:6: error: expected ';' after '1' (found 'b')\na = 1\n     ^");
 }
