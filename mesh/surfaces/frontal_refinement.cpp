@@ -16,8 +16,17 @@ namespace {
 // A triangle is good once its circumradius is below this multiple of the circumradius of the
 // equilateral triangle of the target size.
 constexpr double kAcceptRatio = 1.2;
-// A new point closer than this fraction of the target size to a vertex is not inserted.
-constexpr double kMinSpacing = 0.5;
+// A new point closer than this fraction of the target size to a vertex is not inserted...
+constexpr double kMinSpacing = 0.35;
+// ... nor one closer to a boundary edge than this fraction of the edge's length (which would
+// make a sliver against it). Coarse strips, a segment or so wide, get a row of points down their
+// middle once they are wider than twice this fraction of their segments, as in the reference.
+constexpr double kEdgeSpacing = 0.2;
+// The front does not step to a point where the field asks for sizes this many times smaller
+// than the edge it builds on: a zone of much smaller sizes that no boundary node lies in is
+// met by the front at its rim and left as it is (the reference's frontal mesher behaves so;
+// its Delaunay refinement fills such zones).
+constexpr double kLargestStepDown = 3.5;
 constexpr double kSqrt3 = 1.7320508075688772;
 constexpr double kSqrt2 = 1.4142135623730951;
 constexpr double kPi = 3.14159265358979323846;
@@ -288,7 +297,7 @@ class FrontalRefiner {
   }
 
   // True if x would come closer than kMinSpacing target sizes to one of its future
-  // neighbours, or to a boundary edge of its cavity (a sliver against a long boundary edge).
+  // neighbours, or closer than kEdgeSpacing lengths of a boundary edge of its cavity to it.
   bool tooClose(std::span<const Triangulation2D::CavityEdge> cavity, Vec2 x, double size) const {
     const MetricFrame f = frameAt(x);
     const double limit = kMinSpacing * size;
@@ -298,7 +307,8 @@ class FrontalRefiner {
       if (e.kind == EdgeKind::Free) continue;
       const Vec2 ab = sub(f.apply(sub(tri_.point(e.b), x)), a);
       const double t = -(a.u * ab.u + a.v * ab.v) / (ab.u * ab.u + ab.v * ab.v);
-      if (t > 0 && t < 1 && length({a.u + t * ab.u, a.v + t * ab.v}) < limit) return true;
+      if (t > 0 && t < 1 && length({a.u + t * ab.u, a.v + t * ab.v}) < kEdgeSpacing * length(ab))
+        return true;
     }
     return false;
   }
@@ -326,6 +336,11 @@ class FrontalRefiner {
     if (corner == kNone) return false;
     const Vec2 x =
         placement_ == Placement::FrontalQuads ? quadPoint(t, corner) : frontPoint(t, corner);
+    if (field_) {
+      const std::array<std::uint32_t, 2> ends{tri_.vertex(nextCorner(corner)),
+                                              tri_.vertex(prevCorner(corner))};
+      if ((*field_)(x) * kLargestStepDown < meanSize(ends)) return false;
+    }
     return insert(x, tri_.locate(x, t));
   }
 
