@@ -6,6 +6,10 @@
 #include <cstdlib>
 #include <utility>
 
+#include "mesh/sizes/automatic_size.h"
+#include "mesh/sizes/boundary_extension.h"
+#include "mesh/sizes/field_options.h"
+#include "mesh/sizes/finite_differences.h"
 #include "mesh/sizes/math_expression.h"
 #include "mesh/sizes/point_cloud.h"
 
@@ -16,84 +20,7 @@ constexpr double kUnbounded = 1e22;
 constexpr int kMaxDepth = 64;  // deeper field references are taken for a cycle
 
 using Slot = SizeFields::Slot;
-
-constexpr const char* kSlotNames[SizeFields::kSlotCount] = {
-    "VIn",     "VOut",    "XMin",    "XMax",    "YMin",    "YMax",    "ZMin",
-    "ZMax",    "Thickness", "Radius", "XCenter", "YCenter", "ZCenter", "XAxis",
-    "YAxis",   "ZAxis",   "Sampling", "InField", "SizeMin", "SizeMax", "DistMin",
-    "DistMax", "Sigmoid", "StopAtDistMax", "IncludeBoundary"};
-
-struct Default {
-  Slot slot;
-  double value;
-};
-
-// The numeric options of each type, with their default values.
-std::vector<Default> numericOptions(SizeFields::Type t) {
-  using T = SizeFields::Type;
-  using S = Slot;
-  switch (t) {
-    case T::Constant:
-      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::IncludeBoundary, 1}};
-    case T::Box:
-      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::XMin, 0}, {S::XMax, 0},
-              {S::YMin, 0},         {S::YMax, 0},          {S::ZMin, 0}, {S::ZMax, 0},
-              {S::Thickness, 0}};
-    case T::Ball:
-      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::Radius, 0}, {S::Thickness, 0},
-              {S::XCenter, 0},      {S::YCenter, 0},       {S::ZCenter, 0}};
-    case T::Cylinder:
-      return {{S::VIn, kUnbounded}, {S::VOut, kUnbounded}, {S::Radius, 0},  {S::XAxis, 0},
-              {S::YAxis, 0},        {S::ZAxis, 1},         {S::XCenter, 0}, {S::YCenter, 0},
-              {S::ZCenter, 0}};
-    case T::Distance: return {{S::Sampling, 20}};
-    case T::Threshold:
-      return {{S::InField, 0}, {S::SizeMin, 0.1}, {S::SizeMax, 1},       {S::DistMin, 1},
-              {S::DistMax, 10}, {S::Sigmoid, 0},  {S::StopAtDistMax, 0}};
-    case T::Restrict: return {{S::InField, 0}, {S::IncludeBoundary, 1}};
-    case T::MathEval:
-    case T::Min:
-    case T::Max: return {};
-  }
-  return {};
-}
-
-bool typeNamed(const std::string& name, SizeFields::Type& type) {
-  using T = SizeFields::Type;
-  static const std::pair<const char*, T> kTypes[] = {
-      {"Constant", T::Constant}, {"Box", T::Box},         {"Ball", T::Ball},
-      {"Cylinder", T::Cylinder}, {"Distance", T::Distance}, {"Attractor", T::Distance},
-      {"Threshold", T::Threshold}, {"MathEval", T::MathEval}, {"Min", T::Min},
-      {"Max", T::Max},           {"Restrict", T::Restrict}};
-  for (const auto& entry : kTypes)
-    if (name == entry.first) return type = entry.second, true;
-  return false;
-}
-
-std::string canonicalOption(const std::string& name) {
-  static const std::pair<const char*, const char*> kAliases[] = {
-      {"NodesList", "PointsList"},   {"EdgesList", "CurvesList"},
-      {"FacesList", "SurfacesList"}, {"RegionsList", "VolumesList"},
-      {"NNodesByEdge", "Sampling"},  {"NumPointsPerCurve", "Sampling"},
-      {"IField", "InField"},         {"LcMin", "SizeMin"},
-      {"LcMax", "SizeMax"}};
-  for (const auto& alias : kAliases)
-    if (name == alias.first) return alias.second;
-  return name;
-}
-
-int listDimension(const std::string& name) {
-  if (name == "PointsList") return 0;
-  if (name == "CurvesList") return 1;
-  if (name == "SurfacesList") return 2;
-  if (name == "VolumesList") return 3;
-  return -1;
-}
-
-bool takesEntities(SizeFields::Type t) {
-  using T = SizeFields::Type;
-  return t == T::Distance || t == T::Constant || t == T::Restrict;
-}
+using Type = SizeFields::Type;
 
 // Points a Distance field measures from: its points, and `sampling` points evenly spaced in
 // parameter on each curve (sampling x sampling on each surface).
@@ -125,52 +52,128 @@ std::vector<Vec3> distanceSamples(const Model& model, const std::vector<EntityId
   return samples;
 }
 
+std::vector<int> tagsOfDimension(const std::vector<EntityId>& entities, int dim) {
+  std::vector<int> tags;
+  for (EntityId e : entities)
+    if (e.dim == dim) tags.push_back(e.tag);
+  return tags;
+}
+
+int rounded(double x) { return static_cast<int>(std::lround(x)); }
+
+// Compiles a formula option; a syntax error names the field and the option.
+std::unique_ptr<MathExpression> compileFormula(const std::string& field, const std::string& name,
+                                               const std::string& text) {
+  try {
+    return std::make_unique<MathExpression>(text);
+  } catch (const ExpressionError& e) {
+    throw ExpressionError(field + "." + name + ": " + e.what());
+  }
+}
+
+// Reads the string options of a type (formulas, command lines, file names).
+void readStrings(SizeFields::Field& f, const std::string& field, const SizeFieldDefinition& def,
+                 MessageSink& log) {
+  const std::vector<StringOption> options = stringOptions(f.type);
+  for (const auto& [name, text] : def.strings)
+    if (std::none_of(options.begin(), options.end(),
+                     [&](const StringOption& o) { return name == o.name; }))
+      log.warning(field + "." + name + " is not an option of this field type; ignored");
+  const auto valueOf = [&](const StringOption& o) {
+    const auto it = def.strings.find(o.name);
+    return it != def.strings.end() ? it->second : std::string(o.value);
+  };
+  if (f.type == Type::MathEval) {
+    f.expression = compileFormula(field, "F", valueOf(options.front()));
+  } else if (f.type == Type::MathEvalAniso) {
+    for (const StringOption& o : options)
+      f.expressions.push_back(compileFormula(field, o.name, valueOf(o)));
+  } else if (f.type == Type::Param) {
+    const char* coordinates[] = {"x", "y", "z"};
+    for (std::size_t k = 0; k < options.size(); ++k) {
+      const std::string text = valueOf(options[k]);
+      const bool blank = text.find_first_not_of(" \t") == std::string::npos;
+      f.expressions.push_back(
+          compileFormula(field, options[k].name, blank ? coordinates[k] : text));
+    }
+  } else if (f.type == Type::ExternalProcess) {
+    const std::string command = valueOf(options.front());
+    log.warning(field + " = ExternalProcess is refused: geomesh does not run external programs" +
+                (command.empty() ? std::string() : " (CommandLine \"" + command + "\")") +
+                "; it reads as 1e22");
+  } else if (f.type == Type::Automatic && !valueOf(options.front()).empty()) {
+    log.warning(field + ".p4estFileToLoad is not followed: geomesh does not read p4est files; "
+                        "the sizes are computed from the model");
+  }
+}
+
+// Builds what a type precomputes from the model: sample clouds, boundary edges, sources.
+void precompute(SizeFields::Field& f, const std::string& field, const Model& model,
+                const MeshOptions& options, MessageSink& log) {
+  if (f.type == Type::Distance) {
+    f.samples = std::make_unique<PointCloud>(
+        distanceSamples(model, f.entities, rounded(f.number(Slot::Sampling))));
+  } else if (f.type == Type::AttractorAnisoCurve) {
+    f.samples = std::make_unique<PointCloud>(
+        distanceSamples(model, f.entities, rounded(f.number(Slot::Sampling))));
+  } else if (f.type == Type::Extend) {
+    const BoundaryExtension::Law law{f.number(Slot::DistMax), f.number(Slot::Power),
+                                     f.number(Slot::SizeMax)};
+    f.extension = std::make_unique<BoundaryExtension>(model, tagsOfDimension(f.entities, 1),
+                                                      tagsOfDimension(f.entities, 2), law,
+                                                      options);
+  } else if (f.type == Type::Automatic) {
+    if (f.number(Slot::Smoothing) == 0)
+      log.warning(field + ".smoothing = 0 is not followed: geomesh always grades the sizes by "
+                          "'gradation'");
+    AutomaticSize::Options o;
+    o.hBulk = f.number(Slot::HBulk);
+    o.hMin = f.number(Slot::HMin);
+    o.hMax = f.number(Slot::HMax);
+    o.gradation = f.number(Slot::Gradation);
+    o.features = f.number(Slot::Features) != 0;
+    o.pointsPerCircle = rounded(f.number(Slot::PointsPerCircle));
+    o.pointsPerGap = rounded(f.number(Slot::PointsPerGap));
+    f.automatic = std::make_unique<AutomaticSize>(model, o);
+  } else if (f.type == Type::Gradient) {
+    const int kind = rounded(f.number(Slot::Kind));
+    if (kind < 0 || kind > 3)
+      log.warning(field + ".Kind = " + std::to_string(kind) +
+                  " is not a gradient component (0, 1, 2 or 3); the field reads as 1e22");
+  }
+}
+
 // Reads one definition; unknown options are reported.
 SizeFields::Field compile(const Model& model, int tag, const SizeFieldDefinition& def,
-                          SizeFields::Type type, MessageSink& log) {
+                          Type type, const MeshOptions& options, MessageSink& log) {
   SizeFields::Field f;
   f.type = type;
   std::vector<std::uint8_t> valid(SizeFields::kSlotCount, 0);
-  for (const Default& d : numericOptions(type)) {
+  for (const SlotDefault& d : numericOptions(type)) {
     f.slots[static_cast<std::size_t>(d.slot)] = d.value;
     valid[static_cast<std::size_t>(d.slot)] = 1;
   }
   auto slotNamed = [&](const std::string& name) -> int {
     for (int k = 0; k < SizeFields::kSlotCount; ++k)
-      if (valid[k] && name == kSlotNames[k]) return k;
+      if (valid[k] && name == slotName(static_cast<Slot>(k))) return k;
     return -1;
   };
   const std::string field = "Field[" + std::to_string(tag) + "]";
   for (const auto& [rawName, values] : def.numbers) {
-    const std::string name = canonicalOption(rawName);
+    const std::string name = canonicalFieldOption(rawName);
     const int dim = listDimension(name);
-    if (dim >= 0 && takesEntities(type)) {
-      for (double v : values) f.entities.push_back({dim, static_cast<int>(std::lround(v))});
-    } else if (name == "FieldsList" && (type == SizeFields::Type::Min ||
-                                        type == SizeFields::Type::Max)) {
-      for (double v : values) f.fieldsList.push_back(static_cast<int>(std::lround(v)));
+    if (dim >= 0 && takesEntityList(type, dim)) {
+      for (double v : values) f.entities.push_back({dim, rounded(v)});
+    } else if (name == "FieldsList" && takesFieldsList(type)) {
+      for (double v : values) f.fieldsList.push_back(rounded(v));
     } else if (const int slot = slotNamed(name); slot >= 0 && values.size() == 1) {
       f.slots[static_cast<std::size_t>(slot)] = values.front();
     } else {
       log.warning(field + "." + rawName + " is not an option of this field type; ignored");
     }
   }
-  for (const auto& [name, text] : def.strings) {
-    if (type == SizeFields::Type::MathEval && name == "F") {
-      try {
-        f.expression = std::make_unique<MathExpression>(text);
-      } catch (const ExpressionError& e) {
-        throw ExpressionError(field + ".F: " + e.what());
-      }
-    }
-    else
-      log.warning(field + "." + name + " is not an option of this field type; ignored");
-  }
-  if (type == SizeFields::Type::MathEval && !f.expression)
-    f.expression = std::make_unique<MathExpression>("F2 + Sin(z)");
-  if (type == SizeFields::Type::Distance)
-    f.samples = std::make_unique<PointCloud>(distanceSamples(
-        model, f.entities, static_cast<int>(std::lround(f.number(Slot::Sampling)))));
+  readStrings(f, field, def, log);
+  precompute(f, field, model, options, log);
   return f;
 }
 
@@ -202,14 +205,45 @@ double threshold(const SizeFields::Field& f, double d) {
   return sMin + r * (sMax - sMin);
 }
 
+// Sizes interpolated along the axis (u) and across the shell (v) of a Frustum.
+double frustum(const SizeFields::Field& f, Vec3 p) {
+  const Vec3 p1{f.number(Slot::X1), f.number(Slot::Y1), f.number(Slot::Z1)};
+  const Vec3 p2{f.number(Slot::X2), f.number(Slot::Y2), f.number(Slot::Z2)};
+  const Vec3 axis = p2 - p1;
+  const double length2 = dot(axis, axis);
+  if (!(length2 > 0)) return kUnbounded;
+  const double u = dot(p - p1, axis) / length2;
+  if (!(u >= 0 && u <= 1)) return kUnbounded;
+  const double r = norm(p - p1 - u * axis);
+  const double inner = (1 - u) * f.number(Slot::InnerR1) + u * f.number(Slot::InnerR2);
+  const double outer = (1 - u) * f.number(Slot::OuterR1) + u * f.number(Slot::OuterR2);
+  const double v = (r - inner) / (outer - inner);
+  if (!(v >= 0 && v <= 1)) return kUnbounded;
+  const double vIn = (1 - u) * f.number(Slot::InnerV1) + u * f.number(Slot::InnerV2);
+  const double vOut = (1 - u) * f.number(Slot::OuterV1) + u * f.number(Slot::OuterV2);
+  return (1 - v) * vIn + v * vOut;
+}
+
+// The smaller of the tangent and normal sizes at distance d from the curves.
+double anisoCurveSize(const SizeFields::Field& f, double d) {
+  const double dMin = f.number(Slot::DistMin), dMax = f.number(Slot::DistMax);
+  double w = d <= dMin ? 0 : d >= dMax ? 1 : (d - dMin) / (dMax - dMin);
+  if (!std::isfinite(w)) w = 1;
+  const double tangent =
+      (1 - w) * f.number(Slot::SizeMinTangent) + w * f.number(Slot::SizeMaxTangent);
+  const double normal = (1 - w) * f.number(Slot::SizeMinNormal) + w * f.number(Slot::SizeMaxNormal);
+  return std::min(tangent, normal);
+}
+
 // The fields a field reads.
 std::vector<int> dependencies(const SizeFields::Field& f) {
-  using T = SizeFields::Type;
-  if (f.type == T::Threshold || f.type == T::Restrict)
-    return {static_cast<int>(std::lround(f.number(Slot::InField)))};
-  if (f.type == T::Min || f.type == T::Max) return f.fieldsList;
-  if (f.type == T::MathEval) return f.expression->fieldsUsed();
-  return {};
+  std::vector<int> tags;
+  if (f.type == Type::Min || f.type == Type::Max) return f.fieldsList;
+  if (f.type == Type::MathEval) return f.expression->fieldsUsed();
+  for (const auto& e : f.expressions)
+    tags.insert(tags.end(), e->fieldsUsed().begin(), e->fieldsUsed().end());
+  if (const int in = f.inField(); in != 0) tags.push_back(in);
+  return tags;
 }
 
 // Tags of the fields that read themselves, directly or not (depth-first search, colours:
@@ -242,18 +276,32 @@ std::vector<int> fieldsInCycles(const std::map<int, SizeFields::Field>& fields) 
 
 }  // namespace
 
+int SizeFields::Field::inField() const {
+  switch (type) {
+    case Type::Threshold:
+    case Type::Restrict:
+    case Type::Param:
+    case Type::Gradient:
+    case Type::Curvature:
+    case Type::Laplacian:
+    case Type::MaxEigenHessian:
+    case Type::Mean:
+    case Type::Octree: return rounded(number(Slot::InField));
+    default: return 0;
+  }
+}
 
-
-SizeFields::SizeFields(const Model& model, MessageSink& log) : model_(&model) {
+SizeFields::SizeFields(const Model& model, MessageSink& log, const MeshOptions& options)
+    : model_(&model) {
   const MeshConstraints& c = model.meshConstraints();
   for (const auto& [tag, def] : c.sizeFields) {
-    Type type;
-    if (!typeNamed(def.type, type)) {
+    const std::optional<Type> type = fieldTypeNamed(def.type);
+    if (!type) {
       log.warning("Field[" + std::to_string(tag) + "] = " + def.type +
                   " is not a supported field type; it reads as 1e22");
       continue;
     }
-    fields_.emplace(tag, compile(model, tag, def, type, log));
+    fields_.emplace(tag, compile(model, tag, def, *type, options, log));
   }
   for (int tag : fieldsInCycles(fields_)) {
     log.warning("Field[" + std::to_string(tag) + "] depends on itself; it reads as 1e22");
@@ -305,6 +353,45 @@ bool SizeFields::inEntities(const std::vector<EntityId>& list, EntityId where,
   return false;
 }
 
+double SizeFields::formula(const MathExpression& e, Vec3 p, EntityId where, int depth) const {
+  const std::vector<int>& used = e.fieldsUsed();
+  double values[16];
+  std::vector<double> many;
+  double* v = values;
+  if (used.size() > 16) many.resize(used.size()), v = many.data();
+  for (std::size_t k = 0; k < used.size(); ++k) v[k] = valueAtDepth(used[k], p, where, depth);
+  return e.evaluate(p.x, p.y, p.z, {v, used.size()});
+}
+
+// The types that read Field[InField] around p, or at a mapped point.
+double SizeFields::evaluateDerived(const Field& f, Vec3 p, EntityId where, int depth) const {
+  const int in = f.inField();
+  const auto g = [&](Vec3 q) { return valueAtDepth(in, q, where, depth); };
+  const double h = f.number(Slot::Delta);
+  switch (f.type) {
+    case Type::Octree: return g(p);
+    case Type::Param:
+      return g({formula(*f.expressions[0], p, where, depth),
+                formula(*f.expressions[1], p, where, depth),
+                formula(*f.expressions[2], p, where, depth)});
+    case Type::Gradient: {
+      const Vec3 gradient = differenceGradient(g, p, h);
+      switch (rounded(f.number(Slot::Kind))) {
+        case 0: return gradient.x;
+        case 1: return gradient.y;
+        case 2: return gradient.z;
+        case 3: return norm(gradient);
+        default: return kUnbounded;
+      }
+    }
+    case Type::Curvature: return differenceCurvature(g, p, h);
+    case Type::Laplacian: return differenceLaplacian(g, p, h);
+    case Type::Mean: return differenceMean(g, p, h);
+    case Type::MaxEigenHessian: return largestEigenvalue(differenceHessian(g, p, h));
+    default: return kUnbounded;
+  }
+}
+
 double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int depth) const {
   switch (f.type) {
     case Type::Constant:
@@ -313,7 +400,7 @@ double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int dep
                  : f.number(Slot::VOut);
     case Type::Restrict:
       return inEntities(f.entities, where, f.number(Slot::IncludeBoundary) != 0)
-                 ? valueAtDepth(static_cast<int>(f.number(Slot::InField)), p, where, depth)
+                 ? valueAtDepth(f.inField(), p, where, depth)
                  : kUnbounded;
     case Type::Box: {
       const Vec3 lo{f.number(Slot::XMin), f.number(Slot::YMin), f.number(Slot::ZMin)};
@@ -337,17 +424,17 @@ double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int dep
       const bool inside = std::abs(along) <= length && radial <= f.number(Slot::Radius);
       return inside ? f.number(Slot::VIn) : f.number(Slot::VOut);
     }
+    case Type::Frustum: return frustum(f, p);
     case Type::Distance: return f.samples->distanceTo(p);
-    case Type::Threshold:
-      return threshold(f, valueAtDepth(static_cast<int>(f.number(Slot::InField)), p, where, depth));
-    case Type::MathEval: {
-      const std::vector<int>& used = f.expression->fieldsUsed();
-      double values[16];
-      std::vector<double> many;
-      double* v = values;
-      if (used.size() > 16) many.resize(used.size()), v = many.data();
-      for (std::size_t k = 0; k < used.size(); ++k) v[k] = valueAtDepth(used[k], p, where, depth);
-      return f.expression->evaluate(p.x, p.y, p.z, {v, used.size()});
+    case Type::AttractorAnisoCurve:
+      return f.samples->empty() ? kUnbounded : anisoCurveSize(f, f.samples->distanceTo(p));
+    case Type::Threshold: return threshold(f, valueAtDepth(f.inField(), p, where, depth));
+    case Type::MathEval: return formula(*f.expression, p, where, depth);
+    case Type::MathEvalAniso: {
+      std::array<double, 6> m{};  // M11 M22 M33 M12 M13 M23, the order of the options
+      for (std::size_t k = 0; k < 6; ++k) m[k] = formula(*f.expressions[k], p, where, depth);
+      const double largest = largestEigenvalue(m);
+      return largest > 0 ? 1 / std::sqrt(largest) : kUnbounded;
     }
     case Type::Min:
     case Type::Max: {
@@ -360,8 +447,11 @@ double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int dep
       }
       return any ? result : kUnbounded;
     }
+    case Type::Extend: return f.extension->at(p, where.dim);
+    case Type::Automatic: return f.automatic->at(p);
+    case Type::ExternalProcess: return kUnbounded;
+    default: return evaluateDerived(f, p, where, depth);
   }
-  return kUnbounded;
 }
 
 }  // namespace geomesh

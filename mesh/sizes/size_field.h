@@ -1,4 +1,4 @@
-// SizeFields: the Box, Ball, Distance, Threshold, MathEval, Min/Max, Restrict size fields.
+// SizeFields: the mesh size fields a script defines, compiled once and evaluated per point.
 #pragma once
 
 #include <array>
@@ -11,57 +11,105 @@
 
 #include "kernel/messages.h"
 #include "kernel/model.h"
+#include "mesh/core/mesh_options.h"
 
 namespace geomesh {
 
 class MathExpression;
 class PointCloud;
+class BoundaryExtension;
+class AutomaticSize;
 
 // The mesh size fields a script defined (Field[n] = Type; Field[n].Option = v), compiled for
-// evaluation, and the background field (Background Field = n) that the 1D and 2D meshers
-// follow. Types: Constant, Box, Ball, Cylinder, Distance (alias Attractor), Threshold,
-// MathEval, Min, Max, Restrict; older option names are accepted (NodesList, EdgesList,
-// FacesList, NNodesByEdge/NumPointsPerCurve, IField, LcMin, LcMax). An unknown type or option
-// is reported once to the log and ignored; a field reading an undefined field, or a cycle of
-// fields, reads 1e22 there.
+// evaluation, and the background field (Background Field = n) that the meshers follow. Each
+// type takes the reference's option names and defaults; older option names are accepted
+// (NodesList, EdgesList, FacesList, NNodesByEdge/NumPointsPerCurve, IField, LcMin, LcMax,
+// lMinTangent..., R1_inner...). An unknown type or option is reported once to the log and
+// ignored; a field reading an undefined field, or a cycle of fields, reads 1e22 there.
+//
+// Types: Constant, Box, Ball, Cylinder, Distance (alias Attractor), Threshold, MathEval, Min,
+// Max, Restrict, and:
+//  - Frustum: between the inner and outer radii of a cone frustum from (X1,Y1,Z1) to
+//    (X2,Y2,Z2), the sizes InnerV*/OuterV* interpolated bilinearly along the axis (u) and
+//    across the shell (v); 1e22 off the shell (inside the inner radius, beyond the outer one,
+//    or past either end).
+//  - Param: Field[InField] at (FX, FY, FZ), three MathEval formulas in x, y, z (and F<n>);
+//    a formula left empty stands for its own coordinate (the reference stops on it).
+//  - Gradient (Kind 0, 1, 2: the x, y or z component, 3: the norm), Curvature (the divergence
+//    of the unit gradient), Laplacian, MaxEigenHessian (the largest, signed, eigenvalue of
+//    the Hessian) and Mean (of the point and its six neighbours at distance Delta): central
+//    finite differences of Field[InField] with step Delta, as the reference takes them.
+//  - Octree: Field[InField], evaluated directly (the reference samples it on an octree and
+//    reads cell values; geomesh evaluates the field itself at every point).
+//  - Extend: the sizes of the mesh on the listed curves (in a surface) or surfaces (in a
+//    volume) carried inwards, F = f SizeBnd + (1 - f) SizeMax with f = ((DistMax - d) /
+//    DistMax)^Power within DistMax of the nearest boundary edge (SizeBnd its length), SizeMax
+//    beyond; 1e22 on points and curves. The curves' edges are placed as the 1D stage places
+//    nodes from the end points' sizes and the Mesh.* options given at construction (not
+//    measured on the mesh, which the fields do not see); a listed surface's edges are taken
+//    for the sizes the same formula gives there from the surface's own curves.
+//  - AutomaticMeshSizeField: see automatic_size.h.
+//  - ExternalProcess: refused (geomesh does not run external programs): a warning, and the
+//    field reads 1e22.
+// Anisotropic types: our meshers are isotropic, and follow an anisotropic field through the
+// smallest size its metric gives at a point, with no warning:
+//  - MathEvalAniso: the metric M (M11 ... M23, MathEval formulas) asks for size 1/sqrt(e'Me)
+//    along a unit direction e; the field reads 1/sqrt(largest eigenvalue of M) (1e22 where
+//    M has no positive eigenvalue). The reference's isotropic meshers read M11 as the size.
+//  - AttractorAnisoCurve: at distance d from the curves (sampled by Sampling points each),
+//    the tangent size goes from SizeMinTangent (d <= DistMin) to SizeMaxTangent (d >= DistMax)
+//    linearly, the normal size likewise; the field reads the smaller of the two. The
+//    reference's isotropic meshers read the distance itself as the size.
 class SizeFields {
  public:
-  SizeFields(const Model& model, MessageSink& log);
+  // `options` are the Mesh.* options of the run, which Extend's 1D meshes of its curves use.
+  SizeFields(const Model& model, MessageSink& log, const MeshOptions& options = {});
   ~SizeFields();
   SizeFields(SizeFields&&) noexcept;
   SizeFields& operator=(SizeFields&&) noexcept;
 
   bool hasBackground() const { return background_ != 0 && fields_.contains(background_); }
   // The background field's sizes at `points`, which lie on entity `where` (some fields,
-  // Restrict and Constant, depend on it).
+  // Restrict, Constant and Extend, depend on it).
   void evaluate(std::span<const Vec3> points, EntityId where, std::span<double> sizes) const;
   double at(Vec3 point, EntityId where) const;
   // Field `tag` at a point (1e22 if undefined).
   double value(int tag, Vec3 point, EntityId where) const;
 
   enum class Type {
-    Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict
+    Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict,
+    Frustum, Param, Gradient, Curvature, Laplacian, MaxEigenHessian, Mean, Octree, Extend,
+    MathEvalAniso, AttractorAnisoCurve, Automatic, ExternalProcess
   };
   // Numeric options, by position (each type uses some of them).
   enum class Slot : std::uint8_t {
     VIn, VOut, XMin, XMax, YMin, YMax, ZMin, ZMax, Thickness, Radius, XCenter, YCenter,
     ZCenter, XAxis, YAxis, ZAxis, Sampling, InField, SizeMin, SizeMax, DistMin, DistMax,
-    Sigmoid, StopAtDistMax, IncludeBoundary
+    Sigmoid, StopAtDistMax, IncludeBoundary,
+    Delta, Kind, X1, Y1, Z1, X2, Y2, Z2, InnerR1, OuterR1, InnerR2, OuterR2, InnerV1, OuterV1,
+    InnerV2, OuterV2, Power, SizeMinTangent, SizeMaxTangent, SizeMinNormal, SizeMaxNormal,
+    HBulk, HMin, HMax, Gradation, Features, PointsPerCircle, PointsPerGap, Smoothing
   };
-  static constexpr int kSlotCount = 25;
+  static constexpr int kSlotCount = 54;
   struct Field {
     Type type = Type::Constant;
     std::array<double, kSlotCount> slots = {};
     std::vector<int> fieldsList;             // Min, Max (FieldsList)
-    std::vector<EntityId> entities;          // Distance, Constant, Restrict lists
-    std::unique_ptr<MathExpression> expression;
-    std::unique_ptr<PointCloud> samples;     // Distance
+    std::vector<EntityId> entities;          // Distance, Constant, Restrict, Extend... lists
+    std::unique_ptr<MathExpression> expression;               // MathEval
+    std::vector<std::unique_ptr<MathExpression>> expressions;  // MathEvalAniso, Param
+    std::unique_ptr<PointCloud> samples;     // Distance, AttractorAnisoCurve
+    std::unique_ptr<BoundaryExtension> extension;  // Extend
+    std::unique_ptr<AutomaticSize> automatic;      // AutomaticMeshSizeField
     double number(Slot s) const { return slots[static_cast<std::size_t>(s)]; }
+    int inField() const;
   };
 
  private:
   double evaluateField(const Field& f, Vec3 p, EntityId where, int depth) const;
+  double evaluateDerived(const Field& f, Vec3 p, EntityId where, int depth) const;
   double valueAtDepth(int tag, Vec3 p, EntityId where, int depth) const;
+  double formula(const MathExpression& e, Vec3 p, EntityId where, int depth) const;
   bool inEntities(const std::vector<EntityId>& list, EntityId where, bool withBoundary) const;
 
   const Model* model_;
