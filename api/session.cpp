@@ -83,6 +83,9 @@ MeshOptions Session::meshOptions() const {
   m.randomFactor = o.number("Mesh.RandomFactor");
   m.recombineAll = o.number("Mesh.RecombineAll") != 0;
   m.recombinationAlgorithm = clampedInteger<int>(o.number("Mesh.RecombinationAlgorithm"));
+  m.recombineMinQuality = o.number("Mesh.RecombineMinimumQuality");
+  m.recombineOptimizeTopology = clampedInteger<int>(o.number("Mesh.RecombineOptimizeTopology"));
+  m.recombineNodeRepositioning = o.number("Mesh.RecombineNodeRepositioning") != 0;
   m.sizeFromCurvature = o.number("Mesh.MeshSizeFromCurvature");
   m.minCircleNodes = clampedInteger<int>(o.number("Mesh.MinimumCircleNodes"));
   m.minCurveNodes = clampedInteger<int>(o.number("Mesh.MinimumCurveNodes"));

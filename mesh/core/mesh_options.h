@@ -27,7 +27,10 @@ struct MeshOptions {
   double randomFactor = 1e-9;  // Mesh.RandomFactor
   bool recombineAll = false;       // Mesh.RecombineAll
   int recombinationAlgorithm = 1;  // Mesh.RecombinationAlgorithm (0 simple, 1 blossom)
-  int subdivisionAlgorithm = 0;    // Mesh.SubdivisionAlgorithm (1: all quadrangles)
+  double recombineMinQuality = 0.01;    // Mesh.RecombineMinimumQuality (corner-angle quality)
+  int recombineOptimizeTopology = 5;    // Mesh.RecombineOptimizeTopology: clean-up passes
+  bool recombineNodeRepositioning = true;  // Mesh.RecombineNodeRepositioning
+  int subdivisionAlgorithm = 0;  // Mesh.SubdivisionAlgorithm (1: all quadrangles, 2: hexahedra)
   bool optimize = true;            // Mesh.Optimize: improve tetrahedra below the threshold
   double optimizeThreshold = 0.3;  // Mesh.OptimizeThreshold (gamma)
 };

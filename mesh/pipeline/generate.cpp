@@ -157,12 +157,13 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
   const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;
-  const std::vector<std::uint64_t> kept = edgesToKeep(surface, mesh);
-  recombineTriangles(mesh, em, *angle,
-                     simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom,
-                     kept);
-  if (!simple) pairLeftoverTriangles(*surface.geometry, mesh, em, kept);
-  smoothMixedMesh(*surface.geometry, mesh, em, std::max(options.smoothing, 1) * 3);
+  RecombinationSettings settings;
+  settings.algorithm = simple ? RecombinationAlgorithm::Simple : RecombinationAlgorithm::Blossom;
+  settings.minQuality = options.recombineMinQuality;
+  settings.topologyPasses = options.recombineOptimizeTopology;
+  settings.repositionNodes = options.recombineNodeRepositioning;
+  settings.smoothingPasses = std::max(options.smoothing, 1) * 3;
+  recombineSurface(*surface.geometry, mesh, em, settings, edgesToKeep(surface, mesh));
 }
 
 // Mesh.RecombinationAlgorithm 2 and 3: simple or blossom, then split into quadrangles.
@@ -188,7 +189,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
   if (!why.empty() && anyByOption)
     log.warning("Mesh.Algorithm " + why + ": surfaces are meshed with " +
                 fallbackText(options.algorithm2D));
-  if (options.subdivisionAlgorithm == 2 || options.subdivisionAlgorithm == 3)
+  if (options.subdivisionAlgorithm == 3)
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");
   const ExtrusionMesher extruded(model);
@@ -234,7 +235,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   // Full-quad recombination (of every surface, or of those asked for) meshes twice as coarse,
   // then splits each element into quadrangles, which halves the sizes back.
   if (isFullQuad(options) && wantsAllQuadrangles(model, options) && dim >= 2) rules.factor *= 2;
-  const SizeFields fields(model, log);
+  const SizeFields fields(model, log, options);
   meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
     const StageTimer timer(1);
@@ -282,6 +283,9 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     if (!report.ok())
       throw MeshError(report.problems.front().entity, report.problems.front().message);
     timer.done(log, mesh.elementCount(3), hasOnlyTetrahedra(mesh) ? "tetrahedra" : "elements");
+    if (options.subdivisionAlgorithm == 2 && !model.volumes().empty())
+      if (const std::string why = subdivideIntoHexahedra(model, mesh); !why.empty())
+        log.warning("Mesh.SubdivisionAlgorithm 2: " + why + "; elements are not split");
   }
   if (options.elementOrder > 1 && dim >= 1) raiseOrder(model, options, mesh, log);
 }

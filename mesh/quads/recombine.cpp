@@ -1,6 +1,8 @@
-// recombineTriangles: greedy or blossom pairing of triangles into quadrangles by corner angle.
+// recombineTriangles: greedy or blossom pairing of triangles into quadrangles by corner angle;
+// splitPoorQuadrangles: the quadrangles below a quality cut back into triangles.
 #include "mesh/quads/recombine.h"
 
+#include "mesh/core/quality.h"
 #include "mesh/quads/blossom_matching.h"
 
 #include <algorithm>
@@ -12,7 +14,6 @@ namespace geomesh {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
 
 // A candidate: triangles s and t (indices in the block) joined across their shared edge.
 struct Candidate {
@@ -60,8 +61,8 @@ std::vector<Candidate> candidates(const Mesh& mesh, const ElementBlock& triangle
     const Vec3 p0 = mesh.node(s[0]), p1 = mesh.node(s[1]), p2 = mesh.node(s[2]);
     const Vec3 q0 = mesh.node(t[0]), q1 = mesh.node(t[1]), q2 = mesh.node(t[2]);
     const Vec3 normal = cross(p1 - p0, p2 - p0) + cross(q1 - q0, q2 - q0);
-    c.quality = quadAngleQuality(mesh.node(c.quad[0]), mesh.node(c.quad[1]),
-                                 mesh.node(c.quad[2]), mesh.node(c.quad[3]), normal);
+    c.quality = quadAngleQuality(mesh.node(c.quad[0]), mesh.node(c.quad[1]), mesh.node(c.quad[2]),
+                                 mesh.node(c.quad[3]), normal);
     if (c.quality >= minQuality) result.push_back(c);
   }
   // Best first; ties broken by triangle indices.
@@ -79,7 +80,6 @@ double cornerAngle(Vec3 prev, Vec3 at, Vec3 next) {
   if (!(nu > 0) || !(nv > 0)) return 0;
   return std::acos(std::clamp(dot(u, v) / (nu * nv), -1.0, 1.0));
 }
-
 
 // Greedy: best quality first.
 std::vector<std::uint8_t> greedyChoice(const std::vector<Candidate>& ranked,
@@ -121,22 +121,16 @@ double quadAngleQuality(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 normal) {
   return 1 - worst / (kPi / 2);
 }
 
-std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngleDeviation,
-                               RecombinationAlgorithm algorithm,
+std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, RecombinationAlgorithm algorithm,
                                const std::vector<std::uint64_t>& keptEdges) {
   ElementBlock* block = nullptr;
   for (ElementBlock& b : em.blocks)
     if (b.type == ElementType::Triangle3) block = &b;
   if (!block || block->size() < 2) return 0;
-  const bool blossom = algorithm == RecombinationAlgorithm::Blossom;
-  // Blossom takes every convex pair with no corner nearly straight (it favours the count of
-  // quadrangles), greedy only those within the angle bound.
-  const double minQuality =
-      blossom ? kMinQuadQuality
-              : std::max(kMinQuadQuality, 1 - std::clamp(maxAngleDeviation, 0.0, 90.0) / 90);
-  const std::vector<Candidate> ranked = candidates(mesh, *block, minQuality, keptEdges);
-  // Both complete the greedy pairs by augmenting paths; Simple keeps to the angle bound.
-  const std::vector<std::uint8_t> chosen = blossomChoice(ranked, block->size());
+  const std::vector<Candidate> ranked = candidates(mesh, *block, kMinQuadQuality, keptEdges);
+  const std::vector<std::uint8_t> chosen = algorithm == RecombinationAlgorithm::Blossom
+                                               ? blossomChoice(ranked, block->size())
+                                               : greedyChoice(ranked, block->size());
   std::vector<std::uint8_t> paired(block->size(), 0);
   std::vector<NodeIndex> quads;
   for (std::size_t k = 0; k < ranked.size(); ++k) {
@@ -158,6 +152,44 @@ std::size_t recombineTriangles(const Mesh& mesh, EntityMesh& em, double maxAngle
                                  [](const ElementBlock& b) { return b.nodes.empty(); }),
                   em.blocks.end());
   return count;
+}
+
+std::size_t splitPoorQuadrangles(const Mesh& mesh, EntityMesh& em, double minQuality) {
+  ElementBlock* quads = nullptr;
+  for (ElementBlock& b : em.blocks)
+    if (b.type == ElementType::Quad4) quads = &b;
+  if (!quads || !(minQuality > 0)) return 0;
+  std::vector<NodeIndex> keptQuads, triangles;
+  std::size_t split = 0;
+  for (std::size_t e = 0; e < quads->size(); ++e) {
+    const auto n = quads->element(e);
+    const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]), d = mesh.node(n[3]);
+    const Vec3 up = cross(c - a, d - b);  // twice the polygon's area vector
+    if (quadAngleQuality(a, b, c, d, up) >= minQuality) {
+      keptQuads.insert(keptQuads.end(), n.begin(), n.end());
+      continue;
+    }
+    // The diagonal whose two triangles are both turned along the quadrangle and the better
+    // shaped.
+    auto worst = [&](Vec3 p, Vec3 q, Vec3 r, Vec3 s, Vec3 t, Vec3 u) {
+      if (!(dot(cross(q - p, r - p), up) > 0) || !(dot(cross(t - s, u - s), up) > 0)) return -1.0;
+      return std::min(triangleGamma(p, q, r), triangleGamma(s, t, u));
+    };
+    const double alongAC = worst(a, b, c, a, c, d), alongBD = worst(a, b, d, b, c, d);
+    if (alongAC >= alongBD)
+      triangles.insert(triangles.end(), {n[0], n[1], n[2], n[0], n[2], n[3]});
+    else
+      triangles.insert(triangles.end(), {n[0], n[1], n[3], n[1], n[2], n[3]});
+    ++split;
+  }
+  if (split == 0) return 0;
+  quads->nodes = std::move(keptQuads);
+  ElementBlock& t = em.block(ElementType::Triangle3);
+  t.nodes.insert(t.nodes.end(), triangles.begin(), triangles.end());
+  em.blocks.erase(std::remove_if(em.blocks.begin(), em.blocks.end(),
+                                 [](const ElementBlock& b) { return b.nodes.empty(); }),
+                  em.blocks.end());
+  return split;
 }
 
 }  // namespace geomesh
