@@ -19,8 +19,7 @@ constexpr double kAcceptRatio = 1.2;
 // A new point closer than this fraction of the target size to a vertex is not inserted...
 constexpr double kMinSpacing = 0.35;
 // ... nor one closer to a boundary edge than this fraction of the edge's length (which would
-// make a sliver against it). Coarse strips, a segment or so wide, get a row of points down their
-// middle once they are wider than twice this fraction of their segments, as in the reference.
+// make a sliver against it; the reference refuses points about as close to a boundary edge).
 constexpr double kEdgeSpacing = 0.2;
 // The front does not step to a point where the field asks for sizes this many times smaller
 // than the edge it builds on: a zone of much smaller sizes that no boundary node lies in is
