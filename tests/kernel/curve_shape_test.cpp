@@ -328,19 +328,26 @@ TEST(CurveShape, OpenBSplineIsAClampedUniformCubic) {
   EXPECT_NEAR(modelArea(model, 1), area, 1e-9);
 }
 
-TEST(CurveShape, BSplineOfThreePointsIsAParabola) {
-  // Quadratic, clamped: the Bezier curve of the same points, here y = x^2 for x in [-1, 1].
-  // Reference: length 2.9578857 (2.9578857127), area 1.3333333 (1.3333333293).
-  GeoFactory geo;
-  addPoints(geo, {{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}});
-  geo.addBSpline(1, {1, 2, 3});
-  geo.addLine(2, 3, 1);
-  geo.addCurveLoop(1, {1, 2});
-  geo.addPlaneSurface(1, {1});
-  Model model;
-  geo.synchronize(model);
-  EXPECT_NEAR(modelLength(model, 1), std::sqrt(5.0) + std::asinh(2.0) / 2, 1e-9);
-  EXPECT_NEAR(modelArea(model, 1), 4.0 / 3, 1e-9);
+// A quadratic clamped BSpline of three points is the Bezier curve of the same points: here the
+// parabola y = x^2 for x in [-1, 1]. Reference, both: length 2.9578857 (2.9578857127), area
+// 1.3333333 (1.3333333293).
+TEST(CurveShape, BSplineOfThreePointsAndQuadraticBezierAreAParabola) {
+  for (const bool bezier : {false, true}) {
+    SCOPED_TRACE(bezier ? "Bezier" : "BSpline");
+    GeoFactory geo;
+    addPoints(geo, {{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}});
+    if (bezier)
+      geo.addBezier(1, {1, 2, 3});
+    else
+      geo.addBSpline(1, {1, 2, 3});
+    geo.addLine(2, 3, 1);
+    geo.addCurveLoop(1, {1, 2});
+    geo.addPlaneSurface(1, {1});
+    Model model;
+    geo.synchronize(model);
+    EXPECT_NEAR(modelLength(model, 1), std::sqrt(5.0) + std::asinh(2.0) / 2, 1e-9);
+    EXPECT_NEAR(modelArea(model, 1), 4.0 / 3, 1e-9);
+  }
 }
 
 TEST(CurveShape, ClosedBSplineIsPeriodic) {
@@ -389,20 +396,6 @@ TEST(CurveShape, CubicBezier) {
   EXPECT_NEAR(std::abs(sweptArea(arc) + segmentSweptArea(p.back(), p.front())), 4.2, 1e-12);
   EXPECT_NEAR(modelLength(model, 1), length, 1e-9);
   EXPECT_NEAR(modelArea(model, 1), 4.2, 1e-9);
-}
-
-TEST(CurveShape, QuadraticBezierIsAParabola) {
-  // Reference: length 2.9578857 (2.9578857127), area 1.3333333 (1.3333333293).
-  GeoFactory geo;
-  addPoints(geo, {{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}});
-  geo.addBezier(1, {1, 2, 3});
-  geo.addLine(2, 3, 1);
-  geo.addCurveLoop(1, {1, 2});
-  geo.addPlaneSurface(1, {1});
-  Model model;
-  geo.synchronize(model);
-  EXPECT_NEAR(modelLength(model, 1), std::sqrt(5.0) + std::asinh(2.0) / 2, 1e-9);
-  EXPECT_NEAR(modelArea(model, 1), 4.0 / 3, 1e-9);
 }
 
 // --- Nurbs ----------------------------------------------------------------------------------

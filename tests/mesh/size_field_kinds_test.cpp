@@ -12,6 +12,7 @@
 #include "mesh/sizes/finite_differences.h"
 #include "mesh/sizes/size_field.h"
 #include "mesh_test_models.h"
+#include "size_field_fixtures.h"
 
 namespace geomesh {
 namespace {
@@ -21,12 +22,8 @@ using testing::PolygonModelBuilder;
 constexpr double kUnbounded = 1e22;
 constexpr EntityId kSurface{2, 1};
 
-class RecordingSink final : public MessageSink {
- public:
-  std::vector<std::string> warnings;
-  void info(std::string_view) override {}
-  void warning(std::string_view m) override { warnings.emplace_back(m); }
-};
+using testing::nodeCount;
+using testing::RecordingSink;
 
 SizeFieldDefinition field(std::string type, std::map<std::string, std::vector<double>> numbers,
                           std::map<std::string, std::string> strings = {}) {
@@ -278,14 +275,6 @@ TEST(SizeFieldKinds, DerivedFieldsReadingThemselvesAreCycles) {
 
 // ---- meshes against the reference ----
 
-std::size_t nodeCount(Model model, MeshOptions options = {}) {
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, options, 2, mesh, log);
-  const MeshCheckReport report = checkMesh(model, mesh);
-  EXPECT_TRUE(report.ok()) << report.summary();
-  return mesh.nodeCount();
-}
 
 // Within `tolerance` (a fraction) of the reference's node count for the same definitions.
 void expectNodesNear(std::size_t actual, double reference, double tolerance = 0.12) {

@@ -12,18 +12,15 @@
 #include "mesh/pipeline/generate.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh_test_models.h"
+#include "size_field_fixtures.h"
 
 namespace geomesh {
 namespace {
 
 using testing::PolygonModelBuilder;
 
-class RecordingSink final : public MessageSink {
- public:
-  std::vector<std::string> warnings;
-  void info(std::string_view) override {}
-  void warning(std::string_view m) override { warnings.emplace_back(m); }
-};
+using testing::nodeCount;
+using testing::RecordingSink;
 
 TEST(MathExpression, EvaluatesArithmeticAndFunctions) {
   const MathExpression e("1 + 2*x^2 - y/4 + Sqrt(z) + min(3, 2) + -Pi/Pi");
@@ -121,14 +118,6 @@ TEST(SizeFields, UnknownTypesAndOptionsWarn) {
   EXPECT_FALSE(f.hasBackground());
 }
 
-std::size_t nodeCount(Model model, MeshOptions options = {}) {
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, options, 2, mesh, log);
-  const MeshCheckReport report = checkMesh(model, mesh);
-  EXPECT_TRUE(report.ok()) << report.summary();
-  return mesh.nodeCount();
-}
 
 // Within 8% of the node count the reference mesher gives for the same definitions.
 void expectNodesNear(std::size_t actual, double reference) {
