@@ -37,7 +37,8 @@ std::vector<Vec3> curveNodes(const Model& model, const ModelCurve& curve, const 
     points[k] = g.point(r.min + (r.max - r.min) * k / kPieces);
     if (k > 0) length[k] = length[k - 1] + distance(points[k - 1], points[k]);
   }
-  const auto [startSize, endSize] = rules.curveEndSizes(*start, *end);
+  const auto ends = rules.curveEndSizes(*start, *end);
+  const double startSize = ends.first, endSize = ends.second;
   const double total = length[kPieces];
   const auto sizeAt = [&](double s) {
     const double w = total > 0 ? s / total : 0;

@@ -75,10 +75,12 @@ std::unique_ptr<MathExpression> compileFormula(const std::string& field, const s
 void readStrings(SizeFields::Field& f, const std::string& field, const SizeFieldDefinition& def,
                  MessageSink& log) {
   const std::vector<StringOption> options = stringOptions(f.type);
-  for (const auto& [name, text] : def.strings)
+  for (const auto& entry : def.strings) {
+    const std::string& name = entry.first;
     if (std::none_of(options.begin(), options.end(),
                      [&](const StringOption& o) { return name == o.name; }))
       log.warning(field + "." + name + " is not an option of this field type; ignored");
+  }
   const auto valueOf = [&](const StringOption& o) {
     const auto it = def.strings.find(o.name);
     return it != def.strings.end() ? it->second : std::string(o.value);

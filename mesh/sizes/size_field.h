@@ -12,10 +12,10 @@
 #include "kernel/messages.h"
 #include "kernel/model.h"
 #include "mesh/core/mesh_options.h"
+#include "mesh/sizes/math_expression.h"
 
 namespace geomesh {
 
-class MathExpression;
 class PointCloud;
 class BoundaryExtension;
 class AutomaticSize;
