@@ -156,9 +156,13 @@ void Interpreter::definePoint(const ast::CommandStmt& command, const SourceLocat
   const int tag = entityTag(command, where);
   const ast::Expr& value = *command.value;
   std::vector<double> xs = evaluateNumbers(value);
-  if (xs.size() != 3 && xs.size() != 4)
-    fail(value.loc, "Point takes {x, y, z} or {x, y, z, size}, not " + std::to_string(xs.size()) +
-                        " values");
+  if (xs.size() < 3 || xs.size() > 5)
+    fail(value.loc, "Point takes {x, y, z}, {x, y, z, size} or {x, y, z, size, weight}, not " +
+                        std::to_string(xs.size()) + " values");
+  // Older scripts give Nurbs control points a weight; the reference ignores it, and so does
+  // geomesh, saying so.
+  if (xs.size() == 5)
+    warn(value.loc, "Point " + std::to_string(tag) + ": its weight (fifth value) is ignored");
   try {
     session_.factory().addPoint(tag, Vec3{xs[0], xs[1], xs[2]}, xs.size() == 4 ? xs[3] : 0.0);
   } catch (const GeometryError& error) {

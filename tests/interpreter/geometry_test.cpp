@@ -123,7 +123,8 @@ TEST(Geometry, MisspelledCommandIsNotTakenForAList) {
 
 TEST(Geometry, BadArgumentsAreErrors) {
   EXPECT_EQ(firstLineOf("Point(1) = {0, 0};"),
-            "test.geo:1:12: error: Point takes {x, y, z} or {x, y, z, size}, not 2 values");
+            "test.geo:1:12: error: Point takes {x, y, z}, {x, y, z, size} or {x, y, z, size, "
+            "weight}, not 2 values");
   EXPECT_EQ(firstLineOf("Point(1.5) = {0, 0, 0};"),
             "test.geo:1:7: error: tag of 'Point' must be an integer");
 }

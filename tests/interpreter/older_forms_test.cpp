@@ -47,6 +47,21 @@ TEST(OlderForms, ListsInParentheses) {
   EXPECT_EQ(printed("x = (1 + 2) * 2; Printf(\"%g\", x);"), "6\n");
 }
 
+// A fifth value after the size, a Nurbs weight in older scripts, is ignored with a warning.
+TEST(OlderForms, PointWeightIsIgnored) {
+  ScriptRun run;
+  EXPECT_EQ(run.run("Point(2) = {1, 2, 0, 0.1, 0.7071}; p() = Point{2};\n"
+                    "Printf(\"%g %g %g\", p(0), p(1), p(2));"),
+            "1 2 0\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_NE(run.log.warnings[0].find("Point 2: its weight (fifth value) is ignored"),
+            std::string::npos)
+      << run.log.warnings[0];
+  EXPECT_EQ(firstLineOf("Point(2) = {1, 2, 0, 0.1, 0.7, 3};"),
+            "test.geo:1:12: error: Point takes {x, y, z}, {x, y, z, size} or {x, y, z, size, "
+            "weight}, not 6 values");
+}
+
 TEST(OlderForms, SingleQuotedStrings) {
   EXPECT_EQ(printed("s = 'wall'; t = 'it\\'s'; Printf(\"%s %s %g\", s, t, StrLen('ab'));"),
             "wall it's 2\n");
