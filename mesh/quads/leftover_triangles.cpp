@@ -331,22 +331,10 @@ std::size_t collapseDiamonds(const SurfaceGeometry& g, const Mesh& mesh, EntityM
   triangles->nodes = std::move(kept);
   ElementBlock& block = em.block(ElementType::Quad4);
   block.nodes.insert(block.nodes.end(), quads.begin(), quads.end());
-  std::vector<NodeIndex> nodes;
-  std::vector<double> parametric;
-  const bool withParameters = em.parametric.size() == 2 * em.nodes.size();
-  for (std::size_t k = 0; k < em.nodes.size(); ++k) {
-    if (dropped.contains(em.nodes[k])) continue;
-    nodes.push_back(em.nodes[k]);
-    if (withParameters)
-      parametric.insert(parametric.end(), {em.parametric[2 * k], em.parametric[2 * k + 1]});
-  }
-  em.nodes = std::move(nodes);
-  em.parametric = std::move(parametric);
-  em.blocks.erase(std::remove_if(em.blocks.begin(), em.blocks.end(),
-                                 [](const ElementBlock& b) { return b.nodes.empty(); }),
-                  em.blocks.end());
+  dropOwnNodes(em, dropped);
   return quads.size() / 4;
 }
+
 
 }  // namespace
 
@@ -391,6 +379,23 @@ std::size_t pairLeftoverTriangles(const SurfaceGeometry& g, Mesh& mesh, EntityMe
     ++paired;
   }
   return paired;
+}
+
+void dropOwnNodes(EntityMesh& em, const std::unordered_set<NodeIndex>& dropped) {
+  em.blocks.erase(std::remove_if(em.blocks.begin(), em.blocks.end(),
+                                 [](const ElementBlock& b) { return b.nodes.empty(); }),
+                  em.blocks.end());
+  const bool withParameters = em.parametric.size() == 2 * em.nodes.size();
+  std::vector<NodeIndex> nodes;
+  std::vector<double> parametric;
+  for (std::size_t k = 0; k < em.nodes.size(); ++k) {
+    if (dropped.contains(em.nodes[k])) continue;
+    nodes.push_back(em.nodes[k]);
+    if (withParameters)
+      parametric.insert(parametric.end(), {em.parametric[2 * k], em.parametric[2 * k + 1]});
+  }
+  em.nodes = std::move(nodes);
+  em.parametric = std::move(parametric);
 }
 
 }  // namespace geomesh

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -55,6 +56,10 @@ std::size_t splitPoorQuadrangles(const Mesh& mesh, EntityMesh& em, double minQua
 // surface (removeDiamonds). A change is kept only when the quadrangles it makes are convex.
 // The removed nodes leave em.nodes (the mesh still holds them: see Mesh::dropUnheldNodes).
 // Each returns the number of nodes removed.
+// Drops the element blocks left empty and the nodes in `dropped` (with their parameters) from
+// a surface's own, after a pass took elements and nodes out.
+void dropOwnNodes(EntityMesh& em, const std::unordered_set<NodeIndex>& dropped);
+
 std::size_t removeTwoQuadNodes(const Mesh& mesh, EntityMesh& em);
 std::size_t removeDiamonds(const SurfaceGeometry& g, Mesh& mesh, EntityMesh& em);
 

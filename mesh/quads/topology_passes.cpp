@@ -70,20 +70,7 @@ void store(EntityMesh& em, const std::vector<Quad>& quads, const std::vector<std
   block.nodes.clear();
   for (std::size_t k = 0; k < quads.size(); ++k)
     if (!gone[k]) block.nodes.insert(block.nodes.end(), quads[k].begin(), quads[k].end());
-  em.blocks.erase(std::remove_if(em.blocks.begin(), em.blocks.end(),
-                                 [](const ElementBlock& b) { return b.nodes.empty(); }),
-                  em.blocks.end());
-  const bool withParameters = em.parametric.size() == 2 * em.nodes.size();
-  std::vector<NodeIndex> nodes;
-  std::vector<double> parametric;
-  for (std::size_t k = 0; k < em.nodes.size(); ++k) {
-    if (removed.contains(em.nodes[k])) continue;
-    nodes.push_back(em.nodes[k]);
-    if (withParameters)
-      parametric.insert(parametric.end(), {em.parametric[2 * k], em.parametric[2 * k + 1]});
-  }
-  em.nodes = std::move(nodes);
-  em.parametric = std::move(parametric);
+  dropOwnNodes(em, removed);
 }
 
 }  // namespace

@@ -88,12 +88,11 @@ class FrontalRefiner {
       if (stamp_[e.triangle] != e.stamp || state_[e.triangle] != State::Active) continue;
       if (!advanceFront(e.triangle)) state_[e.triangle] = State::Accepted;
     }
-    if (field_)
-      for (std::uint32_t v = firstNew; v < tri_.pointCount(); ++v)
-        tri_.setSize(v, std::min(tri_.size(v), fieldAt(v)));
-    if (bound_)
-      for (std::uint32_t v = firstNew; v < tri_.pointCount(); ++v)
-        tri_.setSize(v, std::min(tri_.size(v), (*bound_)(tri_.point(v))));
+    if (field_ || bound_)
+      for (std::uint32_t v = firstNew; v < tri_.pointCount(); ++v) {
+        const double size = field_ ? std::min(tri_.size(v), fieldAt(v)) : tri_.size(v);
+        tri_.setSize(v, boundedAt(size, tri_.point(v)));
+      }
   }
 
  private:
@@ -183,8 +182,8 @@ class FrontalRefiner {
   Vec2 frontPoint(std::uint32_t t, std::uint32_t corner) const {
     const std::uint32_t va = tri_.vertex(nextCorner(corner));
     const std::uint32_t vb = tri_.vertex(prevCorner(corner));
-    const MetricFrame f = frameAt(
-        {0.5 * (tri_.point(va).u + tri_.point(vb).u), 0.5 * (tri_.point(va).v + tri_.point(vb).v)});
+    const Vec2 edgeMiddle = middle(va, vb);
+    const MetricFrame f = frameAt(edgeMiddle);
     const Vec2 a = f.apply(tri_.point(va)), b = f.apply(tri_.point(vb));
     const Vec2 mid{0.5 * (a.u + b.u), 0.5 * (a.v + b.v)};
     const Vec2 ab = sub(b, a);
@@ -193,7 +192,7 @@ class FrontalRefiner {
     const Vec2 center = circumcenter(f.apply(p(t, 0)), f.apply(p(t, 1)), f.apply(p(t, 2)));
     const double q = std::max(length(sub(center, mid)), 1e-300);
     const std::array<std::uint32_t, 2> ends{va, vb};
-    const double target = boundedAt(meanSize(ends), middle(va, vb)) / kSqrt3;
+    const double target = boundedAt(meanSize(ends), edgeMiddle) / kSqrt3;
     const double rho = std::min(std::max(target, half), (half * half + q * q) / (2 * q));
     const double d = rho + std::sqrt(std::max(rho * rho - half * half, 0.0));
     return f.invert({mid.u + d * inward.u, mid.v + d * inward.v});
@@ -251,9 +250,8 @@ class FrontalRefiner {
   Vec2 quadPoint(std::uint32_t t, std::uint32_t corner) const {
     const std::uint32_t va = tri_.vertex(nextCorner(corner));
     const std::uint32_t vb = tri_.vertex(prevCorner(corner));
-    const Vec2 middle{0.5 * (tri_.point(va).u + tri_.point(vb).u),
-                      0.5 * (tri_.point(va).v + tri_.point(vb).v)};
-    const MetricFrame f = frameAt(middle);
+    const Vec2 mid = middle(va, vb);
+    const MetricFrame f = frameAt(mid);
     const Vec2 a = f.apply(tri_.point(va)), b = f.apply(tri_.point(vb));
     const Vec2 ab = sub(b, a);
     const Vec2 inward{-ab.v / length(ab), ab.u / length(ab)};
@@ -261,7 +259,7 @@ class FrontalRefiner {
     const double angle = cross.u == 0 && cross.v == 0 ? std::atan2(ab.v, ab.u)
                                                       : std::atan2(cross.v, cross.u) / 4;
     const std::array<std::uint32_t, 2> ends{va, vb};
-    const double target = boundedAt(meanSize(ends), middle);
+    const double target = boundedAt(meanSize(ends), mid);
     const auto maxNorm = [angle](Vec2 d) {
       const double c = std::cos(angle), s = std::sin(angle);
       return std::max(std::abs(c * d.u + s * d.v), std::abs(-s * d.u + c * d.v));
