@@ -92,6 +92,9 @@ MeshOptions Session::meshOptions() const {
   m.subdivisionAlgorithm = clampedInteger<int>(o.number("Mesh.SubdivisionAlgorithm"));
   m.optimize = o.number("Mesh.Optimize") != 0;
   m.optimizeThreshold = o.number("Mesh.OptimizeThreshold");
+  m.anisoMax = o.number("Mesh.AnisoMax");
+  m.smoothRatio = o.number("Mesh.SmoothRatio");
+  m.views = &views_;
   return m;
 }
 

@@ -18,6 +18,7 @@
 #include "mesh/core/mesh.h"
 #include "mesh/core/mesh_options.h"
 #include "mesh/homology/homology.h"
+#include "mesh/views/view.h"
 #include "stdlib/options.h"
 
 namespace geomesh {
@@ -41,6 +42,10 @@ class Session {
   const Model& model() const { return model_; }
   Mesh& mesh() { return mesh_; }
   const Mesh& mesh() const { return mesh_; }
+  // The post-processing views (View "..." {...}; Merge "f.pos"; plugins): they outlive
+  // NewModel and Delete Model, as background meshes are often merged before the geometry.
+  post::ViewStore& views() { return views_; }
+  const post::ViewStore& views() const { return views_; }
   MessageSink& log() const { return log_; }
   std::ostream& out() { return out_; }  // what scripts print (Printf)
 
@@ -96,6 +101,7 @@ class Session {
   FactorySelection factories_;
   Model model_;
   Mesh mesh_;
+  post::ViewStore views_;
   std::vector<HomologyRequest> homologyRequests_;
   std::map<std::string, double> numberOverrides_;
   std::map<std::string, std::string> stringOverrides_;

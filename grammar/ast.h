@@ -109,6 +109,16 @@ struct TailItem {
 // Any statement introduced by keywords: Point(1) = {...}; Plane Surface(1) = {...};
 // Printf("..", x) > "f"; Mesh 2; Include "f"; Coherence; Recombine Surface{1};
 // Translate{1,0,0}{ Point{1}; } Transfinite Curve{1} = 10 Using Progression 2;
+// One record of a view in the parsed format: ST(coordinates){values}; or TIME{values};
+// (`coordinates` empty, `hasCoordinates` false).
+struct ViewItem {
+  std::string type;
+  bool hasCoordinates = false;
+  ExprList coordinates;
+  ExprList values;
+  SourceLocation loc;
+};
+
 struct CommandStmt {
   enum class Args { None, Paren, Bracket, Bare };
   std::vector<std::string> words;
@@ -121,6 +131,7 @@ struct CommandStmt {
   std::string redirect;          // ">" or ">>" (Printf)
   ExprPtr redirectTarget;
   std::string colorName;         // Color Red{...}
+  std::vector<ViewItem> viewItems;  // View "name" { ST(..){..}; ... };
 };
 
 struct ForStmt {

@@ -49,7 +49,8 @@ constexpr std::string_view kFunctionNames[] = {
     "LowerCase", "LowerCaseIn", "Max", "Min", "Modulo", "NameStruct", "NameToString", "Rand", "Round", "S2N",
     "Sin", "Sign", "Sinh",  // Sin first: the likelier meaning of a misspelled "Sinn"
     "Sprintf", "Sqrt", "Step", "Str", "StrCat", "StrChoice", "StrCmp", "StrFind", "StrLen",
-    "StrPrefix", "StrRelative", "StrReplace", "StrSub", "Tan", "Tanh", "Unique", "UpperCase",
+    "StrPrefix", "StrRelative", "StrReplace", "StrSub", "Tan", "Tanh", "TextAttributes", "Unique",
+    "UpperCase",
 };
 
 }  // namespace

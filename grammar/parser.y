@@ -57,6 +57,8 @@ using geomesh::grammar::unary;
 %nterm <std::vector<ast::Attribute>> struct_members
 %nterm <ast::Attribute> struct_member
 %nterm <ast::ExprList> args args_opt items
+%nterm <std::vector<ast::ViewItem>> view_items
+%nterm <ast::ViewItem> view_item
 %nterm <std::vector<ast::ShapePart>> parts
 %nterm <ast::ShapePart> part block block_part
 %nterm <std::vector<ast::ShapePart>> block_parts
@@ -245,10 +247,15 @@ command:
     CommandStmt c; c.words = std::move($1); c.words.push_back(std::move($2));
     c.argStyle = CommandStmt::Args::Bracket; c.args.push_back(std::move($4));
     $$ = makeStmt(std::move(c), @1); }
+| words WORD '[' expr ']' expr ';' {  // Save View[0] "file.pos";
+    CommandStmt c; c.words = std::move($1); c.words.push_back(std::move($2));
+    c.argStyle = CommandStmt::Args::Bracket; c.args.push_back(std::move($4));
+    c.args.push_back(std::move($6)); $$ = makeStmt(std::move(c), @1); }
 | words STRING '{' view_items '}' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Bare;
     auto name = makeExpr(ExprKind::String, @2); name->text = std::move($2);
-    c.args.push_back(std::move(name)); $$ = makeStmt(std::move(c), @1); }
+    c.args.push_back(std::move(name)); c.viewItems = std::move($4);
+    $$ = makeStmt(std::move(c), @1); }
 | words '(' args_opt ')' assign_op block_parts ';' {
     CommandStmt c; c.words = std::move($1); c.argStyle = CommandStmt::Args::Paren;
     c.args = std::move($3); c.op = std::move($5);
@@ -348,10 +355,13 @@ block_parts: block_part { $$.push_back(std::move($1)); }
            | block_parts '{' '}' { $$ = std::move($1); $$.emplace_back(); } ;
 
 // The data of a post-processing view: SP(x,y,z){v}; T2(x,y,0){"text"}; TIME{0,1}; ...
-view_items: %empty | view_items view_item ;
+view_items: %empty { } | view_items view_item { $$ = std::move($1); $$.push_back(std::move($2)); } ;
 view_item:
-  IDENT '(' args_opt ')' '{' args_opt '}' ';'
-| IDENT '{' args_opt '}' ';'
+  IDENT '(' args_opt ')' '{' args_opt '}' ';' {
+    $$.type = std::move($1); $$.hasCoordinates = true; $$.coordinates = std::move($3);
+    $$.values = std::move($6); $$.loc = at(@1); }
+| IDENT '{' args_opt '}' ';' {
+    $$.type = std::move($1); $$.values = std::move($3); $$.loc = at(@1); }
 ;
 block:
   block_item { $$.isBlock = true; $$.items.push_back(std::move($1)); }

@@ -16,7 +16,7 @@ namespace {
 
 // Options of post-processing, printing and solvers: they change nothing in a batch mesh run.
 bool isInterfaceOption(std::string_view path) {
-  for (std::string_view category : {"View.", "Print.", "PostProcessing.", "Solver."})
+  for (std::string_view category : {"Print.", "PostProcessing.", "Solver."})
     if (path.starts_with(category)) return true;
   return false;
 }
@@ -107,6 +107,7 @@ void Interpreter::executeSetter(const ast::CommandStmt& command, const SourceLoc
 
 void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
                                       const SourceLocation& where) {
+  if (assign.path.starts_with("View.")) return setViewOption(assign, where);
   if (isInterfaceOption(assign.path)) {
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
                          assign.path + "' has no effect in batch mode");
@@ -163,6 +164,7 @@ void Interpreter::optionChanged(const std::string& name) {
 }
 
 Value Interpreter::optionValue(const ast::Expr& expr) {
+  if (auto view = viewOptionValue(expr)) return *view;
   if (!isOptionCategory(expr.text) || !expr.args.empty()) {
     warn(expr.loc, "option '" + expr.text + "' is not supported yet; reads as 0");
     return Value::number(0);

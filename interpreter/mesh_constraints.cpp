@@ -158,6 +158,7 @@ bool Interpreter::executeFieldOption(const ast::OptionAssignStmt& assign,
     it->second.strings[option] = value.strings()[0];
     return true;
   }
+  checkFieldView(it->second.type, option, value, *assign.value);
   std::vector<double>& numbers = it->second.numbers[option];
   if (assign.op == "=") {
     numbers = value.numbers();

@@ -202,6 +202,7 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   const std::string ext = extensionOf(file);
   if (ext == ".geo" || ext == ".opt" || ext == ".geo_unrolled")
     return executeInclude(command, where);
+  if (ext == ".pos" || ext == ".bgm") return mergeViewFile(command, where);
   if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".brep" ||
       ext == ".brp" || ext == ".xao")
     return mergeCadFile(file, where);
@@ -225,6 +226,7 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   } catch (const std::runtime_error& error) {
     fail(name.loc, error.what());
   }
+  if (ext == ".msh") readViewsOfMesh(shown, where);
   session_.log().info("Merged '" + shown + "': " + std::to_string(session_.mesh().nodeCount()) +
                       " nodes");
 }

@@ -18,6 +18,8 @@
 #include "kernel/geometry_error.h"
 #include "kernel/model.h"
 #include "kernel/solid_modeling.h"
+#include "mesh/views/plugins.h"
+#include "mesh/views/view.h"
 #include "stdlib/math_functions.h"
 
 namespace geomesh {
@@ -209,6 +211,7 @@ class Interpreter {
   void executePartitionMesh(const ast::CommandStmt& command, const SourceLocation& where);
   // Plugin(name).option = value; and Plugin(name).Run; (plugins.cpp)
   void executePlugin(const ast::PluginStmt& plugin, const SourceLocation& where);
+  void partitionBySlices(const SourceLocation& where);
   void executeSave(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrint(const ast::CommandStmt& command, const SourceLocation& where);
   void executeMerge(const ast::CommandStmt& command, const SourceLocation& where);
@@ -223,6 +226,21 @@ class Interpreter {
   void saveFile(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeFile(const ast::CommandStmt& command, const SourceLocation& where);
   bool deleteByName(const ast::Expr& what, const SourceLocation& where);
+
+  // views: View "name" {...}, View[n].X, Delete/Save View, Background Mesh View, merging view
+  // files (view_statements.cpp)
+  void defineView(const ast::CommandStmt& command, const SourceLocation& where);
+  void addViewRecord(post::View& view, const ast::ViewItem& item);
+  post::View& viewAt(const ast::Expr& index);
+  void setViewOption(const ast::OptionAssignStmt& assign, const SourceLocation& where);
+  std::optional<Value> viewOptionValue(const ast::Expr& expr);
+  void deleteView(const ast::CommandStmt& command, const SourceLocation& where);
+  void checkFieldView(const std::string& type, const std::string& option, const Value& value,
+                      const ast::Expr& where);
+  void setBackgroundView(const ast::CommandStmt& command, const SourceLocation& where);
+  void saveView(const ast::CommandStmt& command, const SourceLocation& where);
+  void mergeViewFile(const ast::CommandStmt& command, const SourceLocation& where);
+  void readViewsOfMesh(const std::string& path, const SourceLocation& where);
 
   // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)
   void defineTransfiniteCurve(const ast::CommandStmt& command, const SourceLocation& where);
@@ -279,7 +297,7 @@ class Interpreter {
   std::map<std::string, Value> variables_;
   std::map<std::string, const ast::StmtList*> macros_;
   std::map<std::string, double> parameterNumbers_;
-  std::map<std::string, std::map<std::string, double>> pluginOptions_;  // by plugin name
+  std::map<std::string, post::PluginOptions> pluginOptions_;  // by plugin name
   std::map<std::string, std::string> parameterStrings_;
   std::map<std::string, StructSpace> structSpaces_;  // by namespace; "" is the global one
   std::deque<SourceFile> sources_;

@@ -124,6 +124,13 @@ std::span<const ScriptFunction> Interpreter::stringFunctions() {
            count = clampedInteger<std::size_t>(std::max(0.0, in.evaluateNumber(*call.args[2])));
          return Value::string(from < s.size() ? s.substr(from, count) : std::string());
        }},
+      {"TextAttributes", 0, kAnyCount, "",  // the style of a view's text: display only
+       [](Interpreter& in, Call call) {
+         if (call.args.size() % 2 != 0)
+           in.fail(call.loc, "TextAttributes takes pairs of texts: \"Font\", \"Helvetica\", ...");
+         for (std::size_t i = 0; i < call.args.size(); ++i) text(in, call, i);
+         return Value::number(0);
+       }},
       {"StrLen", 1, 1, "",
        [](Interpreter& in, Call call) {
          return Value::number(static_cast<double>(text(in, call, 0).size()));

@@ -87,6 +87,7 @@ struct MeshConstraints {
   std::map<int, int> surfaceAlgorithms = {};      // tag -> MeshAlgorithm Surface{t} = n
   std::map<int, SizeFieldDefinition> sizeFields = {};
   int backgroundField = 0;  // Background Field = tag; 0: none
+  int backgroundView = -1;  // Background Mesh View[index]; -1: none
 };
 
 struct ModelPoint {

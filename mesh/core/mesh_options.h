@@ -3,6 +3,10 @@
 
 namespace geomesh {
 
+namespace post {
+class ViewStore;
+}
+
 // The Mesh.* options the generators read, gathered by the session from the option registry.
 struct MeshOptions {
   double sizeMin = 0;        // Mesh.MeshSizeMin
@@ -33,6 +37,10 @@ struct MeshOptions {
   int subdivisionAlgorithm = 0;  // Mesh.SubdivisionAlgorithm (1: all quadrangles, 2: hexahedra)
   bool optimize = true;            // Mesh.Optimize: improve tetrahedra below the threshold
   double optimizeThreshold = 0.3;  // Mesh.OptimizeThreshold (gamma)
+  double anisoMax = 1e33;          // Mesh.AnisoMax: largest aspect ratio of the metric
+  double smoothRatio = 1.8;        // Mesh.SmoothRatio: metric gradation (anisotropic 2D)
+  // The session's views, for Background Mesh View and PostView fields; null when none.
+  const post::ViewStore* views = nullptr;
 };
 
 }  // namespace geomesh

@@ -153,7 +153,7 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
     }
   }
   meshSurface(model, surface, stage.rules, options.smoothing, mesh, &stage.fields,
-              surfaceAlgorithm(stage, surface));
+              surfaceAlgorithm(stage, surface), {options.anisoMax, options.smoothRatio});
   if (!angle || !surface.geometry) return;
   EntityMesh& em = mesh.entity({2, surface.tag});
   const bool simple = options.recombinationAlgorithm == 0 || options.recombinationAlgorithm == 2;

@@ -21,7 +21,9 @@ constexpr const char* kSlotNames[SizeFields::kSlotCount] = {
     "Y2",       "Z2",       "InnerR1",  "OuterR1",  "InnerR2",       "OuterR2",
     "InnerV1",  "OuterV1",  "InnerV2",  "OuterV2",  "Power",         "SizeMinTangent",
     "SizeMaxTangent", "SizeMinNormal", "SizeMaxNormal", "hBulk",     "hMin",
-    "hMax",     "gradation", "features", "nPointsPerCircle", "nPointsPerGap", "smoothing"};
+    "hMax",     "gradation", "features", "nPointsPerCircle", "nPointsPerGap", "smoothing",
+    "ViewIndex", "ViewTag", "CropNegativeValues", "UseClosest", "View", "Order", "Dimension",
+    "TargetElements", "TargetError"};
 
 // Layers per gap when the script gives none. The reference reports an uninitialised number
 // for this default; 2 is the count its automatic size field falls back to.
@@ -54,7 +56,9 @@ std::optional<SizeFields::Type> fieldTypeNamed(const std::string& name) {
       {"MathEvalAniso", T::MathEvalAniso},
       {"AttractorAnisoCurve", T::AttractorAnisoCurve},
       {"AutomaticMeshSizeField", T::Automatic},
-      {"ExternalProcess", T::ExternalProcess}};
+      {"ExternalProcess", T::ExternalProcess},
+      {"PostView", T::PostView},
+      {"Adapt", T::Adapt}};
   for (const auto& entry : kTypes)
     if (name == entry.first) return entry.second;
   return std::nullopt;
@@ -65,7 +69,7 @@ std::string canonicalFieldOption(const std::string& name) {
       {"NodesList", "PointsList"},     {"VerticesList", "PointsList"},
       {"EdgesList", "CurvesList"},     {"FacesList", "SurfacesList"},
       {"RegionsList", "VolumesList"},  {"NNodesByEdge", "Sampling"},
-      {"NumPointsPerCurve", "Sampling"}, {"IField", "InField"},
+      {"NumPointsPerCurve", "Sampling"}, {"IField", "InField"}, {"IView", "ViewIndex"},
       {"LcMin", "SizeMin"},            {"LcMax", "SizeMax"},
       {"lMinTangent", "SizeMinTangent"}, {"lMaxTangent", "SizeMaxTangent"},
       {"lMinNormal", "SizeMinNormal"}, {"lMaxNormal", "SizeMaxNormal"},
@@ -122,6 +126,12 @@ std::vector<SlotDefault> numericOptions(SizeFields::Type t) {
       return {{S::HBulk, -1},      {S::HMin, -1},           {S::HMax, -1},
               {S::Gradation, 1.1}, {S::Features, 1},        {S::PointsPerCircle, 20},
               {S::PointsPerGap, kDefaultPointsPerGap}, {S::Smoothing, 1}};
+    case T::PostView:
+      return {{S::ViewIndex, 0}, {S::ViewTag, -1}, {S::CropNegativeValues, 1}, {S::UseClosest, 1}};
+    case T::Adapt:
+      return {{S::View, -1},          {S::Order, 2},       {S::Dimension, -1},
+              {S::TargetElements, 0}, {S::TargetError, 0}, {S::SizeMin, 0},
+              {S::SizeMax, kUnbounded}};
     case T::MathEval:
     case T::MathEvalAniso:
     case T::ExternalProcess:

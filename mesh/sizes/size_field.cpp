@@ -6,12 +6,15 @@
 #include <cstdlib>
 #include <utility>
 
+#include "mesh/sizes/adapt_size.h"
 #include "mesh/sizes/automatic_size.h"
 #include "mesh/sizes/boundary_extension.h"
 #include "mesh/sizes/field_options.h"
 #include "mesh/sizes/finite_differences.h"
 #include "mesh/sizes/math_expression.h"
+#include "mesh/sizes/metric_tensor.h"
 #include "mesh/sizes/point_cloud.h"
+#include "mesh/sizes/view_size.h"
 
 namespace geomesh {
 namespace {
@@ -109,6 +112,48 @@ void readStrings(SizeFields::Field& f, const std::string& field, const SizeField
   }
 }
 
+// A PostView field's view, indexed; a missing view is reported and leaves the field unset.
+void precomputePostView(SizeFields::Field& f, const std::string& field,
+                        const MeshOptions& options, MessageSink& log) {
+  const int index = rounded(f.number(Slot::ViewIndex)), tag = rounded(f.number(Slot::ViewTag));
+  const post::View* view = viewNamed(options.views, index, tag);
+  if (!view) {
+    log.warning(field + " = PostView: there is no view " +
+                (tag >= 0 ? "of tag " + std::to_string(tag) : "at index " + std::to_string(index)) +
+                "; the field reads 1e22");
+    return;
+  }
+  f.view = std::make_unique<ViewSize>(
+      *view, ViewSize::Options{f.number(Slot::CropNegativeValues) != 0,
+                               f.number(Slot::UseClosest) != 0});
+}
+
+// An Adapt field's sizes; a missing view or wrong options are reported (the field reads 1e22).
+void precomputeAdapt(SizeFields::Field& f, const std::string& field, const MeshOptions& options,
+                     MessageSink& log) {
+  const int index = rounded(f.number(Slot::View));
+  const post::View* view = viewNamed(options.views, index, -1);
+  if (!view) {
+    log.warning(field + " = Adapt: there is no view at index " + std::to_string(index) +
+                " (option View); the field reads 1e22");
+    return;
+  }
+  AdaptOptions o;
+  o.order = rounded(f.number(Slot::Order));
+  o.dimension = rounded(f.number(Slot::Dimension));
+  o.targetElements = f.number(Slot::TargetElements);
+  o.targetError = f.number(Slot::TargetError);
+  o.sizeMin = f.number(Slot::SizeMin);
+  o.sizeMax = f.number(Slot::SizeMax);
+  std::string why;
+  const std::optional<AdaptedSizes> sizes = adaptSizes(*view, o, why);
+  if (!sizes) {
+    log.warning(field + " = Adapt: " + why + "; the field reads 1e22");
+    return;
+  }
+  f.adapt = std::make_unique<AdaptSize>(*view, *sizes, o);
+}
+
 // Builds what a type precomputes from the model: sample clouds, boundary edges, sources.
 void precompute(SizeFields::Field& f, const std::string& field, const Model& model,
                 const MeshOptions& options, MessageSink& log) {
@@ -137,6 +182,10 @@ void precompute(SizeFields::Field& f, const std::string& field, const Model& mod
     o.pointsPerCircle = rounded(f.number(Slot::PointsPerCircle));
     o.pointsPerGap = rounded(f.number(Slot::PointsPerGap));
     f.automatic = std::make_unique<AutomaticSize>(model, o);
+  } else if (f.type == Type::PostView) {
+    precomputePostView(f, field, options, log);
+  } else if (f.type == Type::Adapt) {
+    precomputeAdapt(f, field, options, log);
   } else if (f.type == Type::Gradient) {
     const int kind = rounded(f.number(Slot::Kind));
     if (kind < 0 || kind > 3)
@@ -294,7 +343,7 @@ int SizeFields::Field::inField() const {
 }
 
 SizeFields::SizeFields(const Model& model, MessageSink& log, const MeshOptions& options)
-    : model_(&model) {
+    : model_(&model), anisoMax_(options.anisoMax) {
   const MeshConstraints& c = model.meshConstraints();
   for (const auto& [tag, def] : c.sizeFields) {
     const std::optional<Type> type = fieldTypeNamed(def.type);
@@ -312,6 +361,13 @@ SizeFields::SizeFields(const Model& model, MessageSink& log, const MeshOptions& 
   background_ = c.backgroundField;
   if (background_ != 0 && !fields_.contains(background_))
     log.warning("Background Field = " + std::to_string(background_) + " is not defined; ignored");
+  if (const int index = c.backgroundView; index >= 0) {
+    if (const post::View* view = viewNamed(options.views, index, -1))
+      backgroundView_ = std::make_unique<ViewSize>(*view, ViewSize::Options{});
+    else
+      log.warning("Background Mesh View[" + std::to_string(index) + "]: there is no view at index " +
+                  std::to_string(index) + "; ignored");
+  }
 }
 
 SizeFields::~SizeFields() = default;
@@ -323,8 +379,55 @@ void SizeFields::evaluate(std::span<const Vec3> points, EntityId where,
   for (std::size_t k = 0; k < points.size(); ++k) sizes[k] = at(points[k], where);
 }
 
+bool SizeFields::hasBackgroundField() const {
+  return background_ != 0 && fields_.contains(background_);
+}
+
+bool SizeFields::hasBackground() const { return hasBackgroundField() || backgroundView_; }
+
+// The metric of one field: its own for MathEvalAniso and a PostView of a tensor view, else
+// I/h^2 from its size h (a size <= 0 or not finite asks for nothing).
+std::array<double, 6> SizeFields::fieldMetric(const Field& f, Vec3 p, EntityId where) const {
+  if (f.type == Type::MathEvalAniso) {
+    std::array<double, 6> m{};  // M11 M22 M33 M12 M13 M23
+    for (std::size_t k = 0; k < 6; ++k) m[k] = formula(*f.expressions[k], p, where, 1);
+    return {m[0], m[3], m[4], m[1], m[5], m[2]};
+  }
+  if (f.type == Type::PostView && f.view && f.view->anisotropic())
+    if (const auto t = f.view->tensor(p)) return *t;
+  const double h = evaluateField(f, p, where, 1);
+  return isotropicTensor(h > 0 && std::isfinite(h) ? h : kUnbounded);
+}
+
+std::optional<std::array<double, 6>> SizeFields::metric(Vec3 point, EntityId where) const {
+  if (!hasBackground()) return std::nullopt;
+  std::optional<SymmetricTensor> m;
+  if (hasBackgroundField())
+    m = boundedAnisotropy(fieldMetric(fields_.at(background_), point, where), anisoMax_);
+  if (backgroundView_) {
+    std::optional<SymmetricTensor> t = backgroundView_->tensor(point);
+    if (!t) {
+      const double h = backgroundView_->size(point);
+      t = isotropicTensor(h > 0 && std::isfinite(h) ? h : kUnbounded);
+    }
+    const SymmetricTensor v = boundedAnisotropy(*t, anisoMax_);
+    m = m ? boundedAnisotropy(intersectMetrics(*m, v), anisoMax_) : v;
+  }
+  return m;
+}
+
+bool SizeFields::hasAnisotropicBackground() const {
+  if (backgroundView_ && backgroundView_->anisotropic()) return true;
+  if (!hasBackgroundField()) return false;
+  const Field& f = fields_.at(background_);
+  return f.type == Type::MathEvalAniso ||
+         (f.type == Type::PostView && f.view && f.view->anisotropic());
+}
+
 double SizeFields::at(Vec3 point, EntityId where) const {
-  return hasBackground() ? value(background_, point, where) : kUnbounded;
+  double h = hasBackgroundField() ? value(background_, point, where) : kUnbounded;
+  if (backgroundView_) h = std::min(h, backgroundView_->size(point));
+  return h;
 }
 
 double SizeFields::value(int tag, Vec3 point, EntityId where) const {
@@ -452,6 +555,8 @@ double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int dep
     case Type::Extend: return f.extension->at(p, where.dim);
     case Type::Automatic: return f.automatic->at(p);
     case Type::ExternalProcess: return kUnbounded;
+    case Type::PostView: return f.view ? f.view->size(p) : kUnbounded;
+    case Type::Adapt: return f.adapt ? f.adapt->at(p) : kUnbounded;
     default: return evaluateDerived(f, p, where, depth);
   }
 }

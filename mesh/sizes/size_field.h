@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <memory>
 #include <span>
 #include <string>
@@ -19,6 +20,8 @@ namespace geomesh {
 class PointCloud;
 class BoundaryExtension;
 class AutomaticSize;
+class ViewSize;
+class AdaptSize;
 
 // The mesh size fields a script defined (Field[n] = Type; Field[n].Option = v), compiled for
 // evaluation, and the background field (Background Field = n) that the meshers follow. Each
@@ -51,6 +54,14 @@ class AutomaticSize;
 //  - AutomaticMeshSizeField: see automatic_size.h.
 //  - ExternalProcess: refused (geomesh does not run external programs): a warning, and the
 //    field reads 1e22.
+//  - PostView: the sizes of a view of options.views (ViewTag when >= 0, else ViewIndex,
+//    alias IView), as view_size.h reads them (CropNegativeValues, UseClosest); a missing
+//    view: a warning naming the field and the view, and the field reads 1e22.
+//  - Adapt (geomesh's own): sizes equidistributing the error estimates of a view over the
+//    current mesh, for TargetElements or TargetError (View, Order, Dimension, SizeMin,
+//    SizeMax); see adapt_size.h.
+// Background Mesh View[n] (MeshConstraints::backgroundView) reads view n as a PostView field
+// with the default options does.
 // Anisotropic types: our meshers are isotropic, and follow an anisotropic field through the
 // smallest size its metric gives at a point, with no warning:
 //  - MathEvalAniso: the metric M (M11 ... M23, MathEval formulas) asks for size 1/sqrt(e'Me)
@@ -68,18 +79,28 @@ class SizeFields {
   SizeFields(SizeFields&&) noexcept;
   SizeFields& operator=(SizeFields&&) noexcept;
 
-  bool hasBackground() const { return background_ != 0 && fields_.contains(background_); }
+  // Whether a background is defined: a Background Field, or a Background Mesh View (the
+  // view of options.views at MeshConstraints::backgroundView); with both, the smaller size.
+  bool hasBackground() const;
   // The background field's sizes at `points`, which lie on entity `where` (some fields,
   // Restrict, Constant and Extend, depend on it).
   void evaluate(std::span<const Vec3> points, EntityId where, std::span<double> sizes) const;
   double at(Vec3 point, EntityId where) const;
   // Field `tag` at a point (1e22 if undefined).
   double value(int tag, Vec3 point, EntityId where) const;
+  // The anisotropic metric the background asks for at a point: the symmetric M (xx, xy, xz,
+  // yy, yz, zz) such that the size along a unit direction e is 1/sqrt(e'Me). From a tensor
+  // background view (directly or through a PostView field) or a MathEvalAniso background
+  // field; I/h^2 from an isotropic background of size h. Eigenvalues are bounded so that no
+  // aspect ratio exceeds Mesh.AnisoMax. nullopt where no background is defined.
+  std::optional<std::array<double, 6>> metric(Vec3 point, EntityId where) const;
+  // Whether the background carries anisotropy (a tensor view, MathEvalAniso...).
+  bool hasAnisotropicBackground() const;
 
   enum class Type {
     Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict,
     Frustum, Param, Gradient, Curvature, Laplacian, MaxEigenHessian, Mean, Octree, Extend,
-    MathEvalAniso, AttractorAnisoCurve, Automatic, ExternalProcess
+    MathEvalAniso, AttractorAnisoCurve, Automatic, ExternalProcess, PostView, Adapt
   };
   // Numeric options, by position (each type uses some of them).
   enum class Slot : std::uint8_t {
@@ -88,9 +109,11 @@ class SizeFields {
     Sigmoid, StopAtDistMax, IncludeBoundary,
     Delta, Kind, X1, Y1, Z1, X2, Y2, Z2, InnerR1, OuterR1, InnerR2, OuterR2, InnerV1, OuterV1,
     InnerV2, OuterV2, Power, SizeMinTangent, SizeMaxTangent, SizeMinNormal, SizeMaxNormal,
-    HBulk, HMin, HMax, Gradation, Features, PointsPerCircle, PointsPerGap, Smoothing
+    HBulk, HMin, HMax, Gradation, Features, PointsPerCircle, PointsPerGap, Smoothing,
+    ViewIndex, ViewTag, CropNegativeValues, UseClosest, View, Order, Dimension, TargetElements,
+    TargetError
   };
-  static constexpr int kSlotCount = 54;
+  static constexpr int kSlotCount = 63;
   struct Field {
     Type type = Type::Constant;
     std::array<double, kSlotCount> slots = {};
@@ -101,6 +124,8 @@ class SizeFields {
     std::unique_ptr<PointCloud> samples;     // Distance, AttractorAnisoCurve
     std::unique_ptr<BoundaryExtension> extension;  // Extend
     std::unique_ptr<AutomaticSize> automatic;      // AutomaticMeshSizeField
+    std::unique_ptr<ViewSize> view;                // PostView
+    std::unique_ptr<AdaptSize> adapt;              // Adapt
     double number(Slot s) const { return slots[static_cast<std::size_t>(s)]; }
     int inField() const;
   };
@@ -111,10 +136,14 @@ class SizeFields {
   double valueAtDepth(int tag, Vec3 p, EntityId where, int depth) const;
   double formula(const MathExpression& e, Vec3 p, EntityId where, int depth) const;
   bool inEntities(const std::vector<EntityId>& list, EntityId where, bool withBoundary) const;
+  std::array<double, 6> fieldMetric(const Field& f, Vec3 p, EntityId where) const;
+  bool hasBackgroundField() const;
 
   const Model* model_;
   std::map<int, Field> fields_;
   int background_ = 0;
+  std::unique_ptr<ViewSize> backgroundView_;  // Background Mesh View
+  double anisoMax_ = 1e33;                    // Mesh.AnisoMax
 };
 
 }  // namespace geomesh

@@ -48,6 +48,12 @@ PlanarMesh frontalDelaunayQuads(SurfaceInterior& s) {
   return domainMesh(s);
 }
 
+// BAMG's slot: unit edges in the background's metric, graded from the boundary without one.
+PlanarMesh anisotropic(SurfaceInterior& s) {
+  return anisotropicMesh(s.tri, s.inside, s.firstMovable, s.smoothingPasses, s.metric,
+                         s.anisotropic, s.bound, s.anisotropy);
+}
+
 // Delaunay on planes, MeshAdapt on the other surfaces.
 PlanarMesh automatic(SurfaceInterior& s) {
   return s.metric ? meshAdapt(s) : delaunay(s);
@@ -65,7 +71,7 @@ constexpr SurfaceAlgorithm kRows[] = {
     {3, "initial2d", nullptr, "Initial mesh only", initialMeshOnly, kFrontalDelaunay},
     {5, "del2d", "tri", "Delaunay", delaunay, kFrontalDelaunay},
     {6, "front2d", "frontal", "Frontal-Delaunay", frontalDelaunay, kFrontalDelaunay},
-    {7, "bamg", nullptr, "BAMG", nullptr, kFrontalDelaunay},
+    {7, "bamg", nullptr, "BAMG", anisotropic, kFrontalDelaunay},
     {8, "delquad", nullptr, "Frontal-Delaunay for Quads", frontalDelaunayQuads,
      kFrontalDelaunay},
     {9, "pack", nullptr, "Packing of Parallelograms", nullptr, kFrontalDelaunay},

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mesh/surfaces/anisotropic_mesh.h"
 #include "mesh/surfaces/delaunay2d.h"
 #include "mesh/surfaces/frontal_refinement.h"
 #include "mesh/surfaces/planar_mesh.h"
@@ -29,6 +30,10 @@ struct SurfaceInterior {
   const WorkPlaneSize* field;
   const WorkPlaneSize* bound;
   const WorkPlaneSize* fieldAndBound;  // the smaller of the two; null if both are
+  // For the anisotropic algorithm: the background's metric (field and curvature included,
+  // restricted to the work plane), null without a background, and the options shaping it.
+  const WorkPlaneMetric* anisotropic = nullptr;
+  AnisotropicSettings anisotropy = {};
 };
 
 // One Mesh.Algorithm value. `mesh` is null for the algorithms that are recognised but not

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "mesh/surfaces/anisotropic_metric.h"
 #include "mesh/surfaces/constrained_delaunay.h"
 #include "mesh/surfaces/landing_grid.h"
 #include "mesh/curves/curve_mesher.h"
@@ -404,11 +405,42 @@ double largestInteriorSize(const Triangulation2D& tri, const SurfaceInput& in,
   return largest;
 }
 
+// The surface's tangents along the work plane's axes at a work-plane point: a work-plane
+// vector d is the surface vector d.u t1 + d.v t2 there.
+std::pair<Vec3, Vec3> workTangents(const SurfaceGeometry& g, const WorkFrame& frame, Vec2 work) {
+  const SurfaceDerivatives d = g.firstDerivatives(frame.toParam(work));
+  const Vec2 o = frame.toParam({0, 0}), s1 = frame.toParam({1, 0}), s2 = frame.toParam({0, 1});
+  return {(s1.u - o.u) * d.du + (s1.v - o.v) * d.dv, (s2.u - o.u) * d.du + (s2.v - o.v) * d.dv};
+}
+
+// The metric the anisotropic algorithm follows: the background's (SizeFields::metric, a 3D
+// tensor restricted to the surface), its sizes clamped and scaled as Mesh.MeshSizeMin/Max and
+// Mesh.MeshSizeFactor say, intersected with the curvature's isotropic bound when asked for.
+Metric2 backgroundMetric(const SurfaceGeometry& g, const WorkFrame& frame, EntityId id,
+                         const SizeRules& rules, const SizeFields* fields, bool withCurvature,
+                         const AnisotropicSettings& settings, Vec2 work) {
+  const Vec2 uv = frame.toParam(work);
+  const auto [t1, t2] = workTangents(g, frame, work);
+  const Metric2 lengths{dot(t1, t1), dot(t1, t2), dot(t2, t2)};
+  if (!isPositiveDefinite(lengths)) return {};  // a pole: the other algorithms' fallback too
+  const MetricFrame surface(lengths);
+  Metric2 m = isotropicMetric(rules.finish(rules.sizeMax));
+  if (fields)
+    if (const auto m3 = fields->metric(g.point(uv), id)) {
+      const Metric2 restricted = inFrame(restrictMetric(*m3, t1, t2), surface);
+      if (isPositiveDefinite(restricted)) m = restricted;
+    }
+  m = mapSizes(m, [&](double h) { return rules.finish(h); }, settings.anisoMax);
+  if (withCurvature)
+    m = intersect(m, isotropicMetric(rules.finish(rules.curvatureSize(surfaceCurvature(g, uv)))));
+  return outOfFrame(m, surface);
+}
+
 }  // namespace
 
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
                  int smoothingPasses, Mesh& mesh, const SizeFields* fields,
-                 const SurfaceAlgorithm& algorithm) {
+                 const SurfaceAlgorithm& algorithm, const AnisotropicSettings& anisotropy) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
@@ -459,6 +491,10 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   // vanishes along a pole, would slide them round the turn.
   const std::uint32_t firstMovable =
       firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
+  const WorkPlaneMetric anisotropic = [&](Vec2 work) {
+    return backgroundMetric(g, frame, id, rules, withField ? fields : nullptr, withCurvature,
+                            anisotropy, work);
+  };
   SurfaceInterior interior{tri,
                            inside,
                            firstMovable,
@@ -466,7 +502,9 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
                            g.isPlane() ? nullptr : &metric,
                            withField || withCurvature ? &field : nullptr,
                            withBend ? &bend : nullptr,
-                           withBend ? &both : (withField || withCurvature ? &field : nullptr)};
+                           withBend ? &both : (withField || withCurvature ? &field : nullptr),
+                           withField || withCurvature ? &anisotropic : nullptr,
+                           anisotropy};
   const PlanarMesh planar = algorithm.mesh(interior);
 
   EntityMesh& em = mesh.entity(id);

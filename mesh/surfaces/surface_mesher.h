@@ -7,6 +7,7 @@
 #include "mesh/sizes/size_field.h"
 #include "mesh/core/mesh.h"
 #include "mesh/sizes/size_rules.h"
+#include "mesh/surfaces/anisotropic_mesh.h"
 #include "mesh/surfaces/surface_algorithms.h"
 
 namespace geomesh {
@@ -19,9 +20,10 @@ namespace geomesh {
 // target size is the smaller of the extended one and the field's. Curved surfaces are meshed in
 // their own metric (first fundamental form), planes in plain lengths. No boundary node is added;
 // the triangles are counter-clockwise in the surface's parametrization. Throws MeshError naming the
-// surface when its boundary cannot be triangulated.
+// surface when its boundary cannot be triangulated. `anisotropy` (Mesh.AnisoMax,
+// Mesh.SmoothRatio) is read by the anisotropic algorithm (7) only.
 void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
                  int smoothingPasses, Mesh& mesh, const SizeFields* fields,
-                 const SurfaceAlgorithm& algorithm);
+                 const SurfaceAlgorithm& algorithm, const AnisotropicSettings& anisotropy = {});
 
 }  // namespace geomesh

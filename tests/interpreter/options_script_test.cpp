@@ -73,8 +73,18 @@ TEST(ScriptOptions, WrongValueTypes) {
 
 TEST(ScriptOptions, PostProcessingOptionsAreIgnoredQuietly) {
   ScriptRun run;
-  run.run("View[0].Visible = 0;\nPrint.Width = 100;\nView.Light = 0;\n");
+  run.run("View \"v\" { SP(0,0,0){1}; };\nView[0].Visible = 0;\nPrint.Width = 100;\n"
+          "View.Light = 0;\n");
   EXPECT_TRUE(run.log.warnings.empty());
+  EXPECT_EQ(run.session.views().at(0).numbers.at("Visible"), 0);
+}
+
+TEST(ScriptOptions, OptionsOfAMissingViewWarn) {
+  ScriptRun run;
+  run.run("View[0].Visible = 0;\n");
+  ASSERT_EQ(run.log.warnings.size(), 1u);
+  EXPECT_EQ(run.log.warnings[0], "test.geo:1:1: warning: no view 0 (there is no view); option "
+                                 "'View.Visible' ignored");
 }
 
 TEST(ScriptOptions, FieldOptionsWarn) {

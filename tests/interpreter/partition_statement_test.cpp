@@ -63,11 +63,16 @@ TEST(PartitionStatement, GhostCellsAndTopologyFilesAreNotWrittenAndSaySo) {
   EXPECT_NE(run.session.mesh().partitions(), nullptr);
 }
 
-TEST(PartitionStatement, OtherPluginsWarnWhenRun) {
+TEST(PartitionStatement, UnknownPluginsWarnWhenRun) {
   ScriptRun run;
-  run.run("Plugin(CutPlane).A = 1;\nPlugin(CutPlane).Run;\n");
+  run.run("Plugin(Triangulate).View = 0;\nPlugin(Triangulate).Run;\n");
   ASSERT_EQ(run.log.warnings.size(), 1u);
-  EXPECT_NE(run.log.warnings[0].find("CutPlane"), std::string::npos);
+  EXPECT_NE(run.log.warnings[0].find("Triangulate"), std::string::npos);
+}
+
+TEST(PartitionStatement, ViewPluginsWithoutAViewAreLocatedErrors) {
+  EXPECT_EQ(firstLineOf("Plugin(CutPlane).A = 1;\nPlugin(CutPlane).Run;\n"),
+            "test.geo:2:1: error: Plugin(CutPlane): View = -1: there is no view");
 }
 
 }  // namespace

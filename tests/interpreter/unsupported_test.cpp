@@ -16,7 +16,6 @@ constexpr const char* kStatements[] = {
     "Save \"x.png\";",
     "RefineMesh;",
     "Merge \"whatever.wrl\";",
-    "Background Mesh View[0];",
     "Periodic Surface{2} = {1};",
 };
 

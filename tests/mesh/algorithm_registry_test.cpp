@@ -103,7 +103,9 @@ TEST(SurfaceAlgorithms, EveryAvailableCodeMeshesTheUnitSquare) {
     EXPECT_TRUE(whyUnavailable(row.code).empty());
     EXPECT_EQ(&surfaceAlgorithmFor(row.code), &row);
     EXPECT_TRUE(checkMesh(model, mesh).ok());
-    EXPECT_GT(mesh.elementCount(2), row.code == 3 ? 1u : 100u);
+    // The anisotropic algorithm grows sizes from the boundary's, as the reference's BAMG does
+    // (70 triangles here): fewer than the others.
+    EXPECT_GT(mesh.elementCount(2), row.code == 3 ? 1u : row.code == 7 ? 60u : 100u);
   }
 }
 

@@ -64,12 +64,12 @@ TEST(GenerateMesh, UnavailableSurfaceAlgorithmIsAWarning) {
   Mesh mesh;
   RecordingSink log;
   MeshOptions options;
-  options.algorithm2D = 7;
+  options.algorithm2D = 9;
   generateMesh(model, options, 2, mesh, log);
   ASSERT_EQ(log.lines.size(), 3u);
   EXPECT_EQ(log.lines[1],
-            "Mesh.Algorithm 7 (BAMG) is not available: surfaces are meshed with "
-            "Frontal-Delaunay (6)");
+            "Mesh.Algorithm 9 (Packing of Parallelograms) is not available: surfaces are meshed "
+            "with Frontal-Delaunay (6)");
   EXPECT_GT(mesh.elementCount(2), 0u);
 }
 

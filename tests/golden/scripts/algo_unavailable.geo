@@ -1,6 +1,6 @@
-// Algorithms geomesh does not have fall back to Frontal-Delaunay with a warning: BAMG (7)
-// asked for by Mesh.Algorithm, and 4, which is no 2D algorithm, for surface 2.
-Mesh.Algorithm = 7;
+// Algorithms geomesh does not have fall back to Frontal-Delaunay with a warning: packing of
+// parallelograms (9) asked for by Mesh.Algorithm, and 4, which is no 2D algorithm, for surface 2.
+Mesh.Algorithm = 9;
 lc = 0.1;
 Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc}; Point(3) = {1, 1, 0, lc}; Point(4) = {0, 1, 0, lc};
 Point(5) = {2, 0, 0, lc}; Point(6) = {2, 1, 0, lc};

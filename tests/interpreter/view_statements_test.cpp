@@ -1,0 +1,126 @@
+// Views in scripts: records of the parsed format, options, queries, deletion, background mesh.
+#include <gtest/gtest.h>
+
+#include "script_runner.h"
+
+namespace geomesh::testing {
+namespace {
+
+TEST(ViewStatements, RecordsBecomeElementListsWithTheirTimeSteps) {
+  ScriptRun run;
+  run.run(
+      "View \"sizes\" {\n"
+      "  ST(0,0,0, 1,0,0, 0,1,0){0.1, 0.2, 0.3, 1.1, 1.2, 1.3};\n"
+      "  ST(1,0,0, 1,1,0, 0,1,0){0.2, 0.4, 0.3, 1.2, 1.4, 1.3};\n"
+      "  VP(0.5,0.5,0){1,2,3};\n"
+      "  SL2(0,0,0, 1,0,0, 0.5,0,0){1, 2, 3};\n"
+      "  TIME{0, 0.5};\n"
+      "  T2(10, 20, 0){\"title\"};\n"
+      "  T3(0, 0, 1, 0){\"label\"};\n"
+      "};\n");
+  const post::ViewStore& views = run.session.views();
+  ASSERT_EQ(views.size(), 1u);
+  const post::View& view = views.at(0);
+  EXPECT_EQ(view.name, "sizes");
+  ASSERT_EQ(view.lists.size(), 3u);
+  const post::ElementList& triangles = view.lists[0];
+  EXPECT_EQ(triangles.shape, post::ElementShape::Triangle);
+  EXPECT_EQ(triangles.size(), 2u);
+  EXPECT_EQ(triangles.steps, 2);
+  EXPECT_DOUBLE_EQ(triangles.value(1, 1, 1, 0), 1.4);
+  EXPECT_EQ(view.lists[1].kind, post::FieldKind::Vector);
+  EXPECT_EQ(view.lists[2].order, 2);
+  EXPECT_EQ(view.lists[2].nodesPerElement, 3);
+  EXPECT_EQ(view.times, (std::vector<double>{0, 0.5}));
+  ASSERT_EQ(view.texts.size(), 2u);
+  EXPECT_EQ(view.texts[0].text.front(), "title");
+  EXPECT_EQ(view.texts[1].dimension, 3);
+  EXPECT_EQ(view.stepCount(), 2);
+}
+
+TEST(ViewStatements, OptionsAreKeptAndQueriesReadTheData) {
+  const std::string out = printed(
+      "View \"a\" { SP(0,0,0){2, 5}; SP(1,0,0){-1, 3}; };\n"
+      "View \"b\" { SL(0,0,0, 1,0,0){1, 1}; };\n"
+      "n = PostProcessing.NbViews;\n"
+      "View[n-1].Name = \"renamed\";\n"
+      "View[0].RaiseZ = 1; View[0].RaiseZ += 0.5;\n"
+      "Printf(\"%g %g %g %g %g\", n, View[0].Max, View[0].Min, View[0].NbTimeStep, "
+      "View[0].RaiseZ);\n"
+      "Printf(View[1].Name);\n");
+  EXPECT_EQ(out, "2 5 -1 2 1.5\nrenamed\n");
+}
+
+TEST(ViewStatements, DeleteViewRenumbersTheFollowingOnes) {
+  ScriptRun run;
+  run.run(
+      "View \"a\" { SP(0,0,0){1}; };\nView \"b\" { SP(0,0,0){2}; };\n"
+      "Delete View[0];\nPrintf(\"%g %g\", PostProcessing.NbViews, View[0].Max);\n");
+  EXPECT_EQ(run.out.str(), "1 2\n");
+  EXPECT_EQ(run.session.views().at(0).name, "b");
+}
+
+TEST(ViewStatements, BackgroundMeshViewNamesTheView) {
+  ScriptRun run;
+  run.run(
+      "View \"a\" { SP(0,0,0){1}; };\n"
+      "View \"h\" { ST(0,0,0, 1,0,0, 0,1,0){0.1, 0.1, 0.1}; };\n"
+      "Background Mesh View[1];\n");
+  EXPECT_EQ(run.session.model().meshConstraints().backgroundView, 1);
+}
+
+TEST(ViewStatements, ErrorsAreLocated) {
+  EXPECT_EQ(firstLineOf("View \"a\" {\n  ST(0,0,0, 1,0,0){1,2,3};\n};\n"),
+            "test.geo:2:3: error: ST takes the coordinates of 3 nodes (9 values), not 6");
+  EXPECT_EQ(firstLineOf("View \"a\" {\n  ST(0,0,0, 1,0,0, 0,1,0){1,2};\n};\n"),
+            "test.geo:2:3: error: ST takes 3 values per time step, not 2");
+  EXPECT_EQ(firstLineOf("View \"a\" {\n  SX(0,0,0){1};\n};\n"),
+            "test.geo:2:3: error: 'SX' is not a view record (SP, VL, TT, ST2, T2, T3, TIME, ...)");
+  EXPECT_EQ(firstLineOf("View \"a\" {\n  SP(0,0,0){1};\n  SP(1,0,0){1,2};\n};\n"),
+            "test.geo:3:3: error: SP has 2 time steps where the view's earlier SP records have 1");
+  EXPECT_EQ(firstLineOf("Background Mesh View[2];\n"),
+            "test.geo:1:22: error: no view 2 (there is no view)");
+  EXPECT_EQ(firstLineOf("View \"a\" { SP(0,0,0){1}; };\nx = View[3].Max;\n"),
+            "test.geo:2:10: error: no view 3 (views are numbered 0 to 0)");
+  EXPECT_EQ(firstLineOf("View \"a\" { SP(0,0,0){1}; };\nDelete View[1];\n"),
+            "test.geo:2:13: error: no view 1 (views are numbered 0 to 0)");
+}
+
+TEST(ViewStatements, BadSizesAndMissingViewsAreLocated) {
+  EXPECT_EQ(firstLineOf("View \"h\" { ST(0,0,0, 1,0,0, 0,1,0){0.1, -0.5, 0.1}; };\n"
+                        "Background Mesh View[0];\n"),
+            "test.geo:2:22: error: view 'h' holds the size -0.5 at (1, 0, 0): background sizes "
+            "must be positive numbers");
+  EXPECT_EQ(firstLineOf("View \"h\" { SP(0,0,0){1}; };\nField[1] = PostView;\n"
+                        "Field[1].ViewIndex = 2;\n"),
+            "test.geo:3:22: error: Field PostView.ViewIndex = 2: no view has index 2 (1 views "
+            "defined so far)");
+  EXPECT_EQ(firstLineOf("Field[1] = PostView;\nField[1].ViewTag = 4;\n"),
+            "test.geo:2:20: error: Field PostView.ViewTag = 4: no view has tag 4 (0 views "
+            "defined so far)");
+}
+
+TEST(ViewStatements, ViewBoundsAreReadable) {
+  EXPECT_EQ(printed("View \"h\" { SL(0.5,-1,2, 3,4,0){1,1}; };\n"
+                    "Printf(\"%g %g %g %g %g %g\", View[0].MinX, View[0].MinY, View[0].MinZ, "
+                    "View[0].MaxX, View[0].MaxY, View[0].MaxZ);\n"),
+            "0.5 -1 0 3 4 2\n");
+}
+
+TEST(ViewStatements, ViewsOutliveNewModel) {
+  ScriptRun run;
+  run.run("View \"a\" { SP(0,0,0){1}; };\nNewModel;\nPoint(1) = {0,0,0};\n");
+  EXPECT_EQ(run.session.views().size(), 1u);
+}
+
+TEST(ViewStatements, DisplayOnlyPluginsAndOptionsNeedNoWarning) {
+  ScriptRun run;
+  run.run(
+      "View \"a\" { SP(0,0,0){1}; };\n"
+      "View[0].ColorTable = {1, 2, 3};\nView.Light = 0;\n"
+      "Plugin(Annotate).Text = \"title\";\nPlugin(Annotate).Run;\n");
+  EXPECT_TRUE(run.log.warnings.empty()) << run.log.warnings.front();
+}
+
+}  // namespace
+}  // namespace geomesh::testing
