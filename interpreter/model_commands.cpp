@@ -209,18 +209,19 @@ void Interpreter::mergeFile(const ast::CommandStmt& command, const SourceLocatio
   if (!findReaderByExtension(ext)) {
     session_.noteIgnoredStatement(where);
     warn(where, "'Merge' of '" + file + "' is not supported yet (only .geo, .opt, " +
-                    ".geo_unrolled and " + readExtensionList() + "); ignored");
-    return;
-  }
-  if (session_.hasGeometry() || session_.meshFromFile()) {
-    warn(where, "'Merge' of '" + file + "' into a model that already has " +
-                    (session_.meshFromFile() ? "a mesh file" : "geometry") +
-                    " is not supported yet; ignored");
+                    ".geo_unrolled, .pos and " + readExtensionList() + "); ignored");
     return;
   }
   std::filesystem::path path = file;
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
   const std::string shown = path.lexically_normal().string();
+  if (session_.hasGeometry() || session_.meshFromFile() || session_.mesh().nodeCount() > 0) {
+    if (ext == ".msh" && mergeDataOnly(shown, where)) return;
+    warn(where, "'Merge' of '" + file + "' into a model that already has " +
+                    (session_.meshFromFile() ? "a mesh file" : "geometry") +
+                    " is not supported yet; ignored");
+    return;
+  }
   try {
     session_.readMesh(shown);
   } catch (const std::runtime_error& error) {

@@ -241,6 +241,7 @@ class Interpreter {
   void saveView(const ast::CommandStmt& command, const SourceLocation& where);
   void mergeViewFile(const ast::CommandStmt& command, const SourceLocation& where);
   void readViewsOfMesh(const std::string& path, const SourceLocation& where);
+  bool mergeDataOnly(const std::string& path, const SourceLocation& where);
 
   // mesh constraints: Transfinite, Recombine, Field, Background Field (mesh_constraints.cpp)
   void defineTransfiniteCurve(const ast::CommandStmt& command, const SourceLocation& where);

@@ -9,6 +9,7 @@
 
 #include "api/session.h"
 #include "interpreter/script_interpreter.h"
+#include "io/formats.h"
 #include "io/view_files.h"
 #include "stdlib/clamped_integer.h"
 
@@ -85,6 +86,15 @@ bool hasMeshFormat(const std::string& path) {
   std::string word;
   in >> word;
   return word == "$MeshFormat";
+}
+
+// Whether a (text or binary) MSH file has a line starting with `section`.
+bool hasSection(const std::string& path, const std::string& section) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(section, 0) == 0) return true;
+  return false;
 }
 
 }  // namespace
@@ -318,6 +328,34 @@ void Interpreter::mergeViewFile(const ast::CommandStmt& command, const SourceLoc
     const int added = readListBasedPos(shown, session_.views());
     session_.log().info("Merged '" + shown + "': " + std::to_string(added) + " views");
   } catch (const ViewReadError& error) {
+    fail(where, error.what());
+  }
+}
+
+// Merge "f.msh"; into a model that has geometry or a mesh already: a file of data sections
+// only is read as views on the session's mesh (node and element tags as the session's mesh
+// numbers them in files); a file with a mesh of its own gives its data as views over that
+// mesh, which is not added to the model (with a warning). False when the file holds no data.
+bool Interpreter::mergeDataOnly(const std::string& path, const SourceLocation& where) {
+  if (!hasMeshFormat(path)) return false;
+  try {
+    if (!hasSection(path, "$Nodes")) {
+      const int added = readMshViews(path, session_.mesh(), session_.views());
+      session_.log().info("Read " + std::to_string(added) + " views on the mesh from '" + path +
+                          "'");
+      return added > 0;
+    }
+    Model model;
+    Mesh mesh;
+    readMeshFile(path, *findReaderByExtension(".msh"), model, mesh);
+    const int added = readMshViews(path, mesh, session_.views());
+    if (added == 0) return false;
+    warn(where, "the mesh of '" + path + "' is not added to a model that has one already; " +
+                    "its data are read as " + std::to_string(added) + " views");
+    return true;
+  } catch (const ViewReadError& error) {
+    fail(where, error.what());
+  } catch (const std::runtime_error& error) {
     fail(where, error.what());
   }
 }

@@ -3,8 +3,8 @@
 // A solver computes a solution on a mesh and estimates the error on each element. The best
 // mesh for a budget of N elements spreads the error evenly: small elements where the
 // estimate is large, big ones where it is small. The Adapt field turns a view of
-// per-element error estimates into the sizes of that mesh (see the reference of fields in
-// docs/ for its formulas); meshing again with it as the background field, then estimating
+// per-element error estimates into the sizes of that mesh (the README gives its
+// formulas); meshing again with it as the background field, then estimating
 // again, is the adaptation loop. Here the "solver" is a formula: the function
 // u = exp(-50 r^2), a bump centred at (0.6, 0.4), interpolated linearly on triangles, whose
 // error on an element of size h is about h^2 |second derivative of u| on a measure ~h^2.

@@ -186,6 +186,21 @@ std::vector<double> sampleBendBounds(const Model& model, const ModelCurve& curve
   return sizes;
 }
 
+// The size an anisotropic background asks for along the curve's tangent at `t`: 1/sqrt(t'Mt)
+// for the unit tangent t; `fallback` where the metric is undefined or degenerate there.
+double sizeAlongMetric(const SizeFields& fields, const CurveGeometry& g, int tag, double t,
+                       Vec3 point, double fallback) {
+  const auto m = fields.metric(point, {1, tag});
+  const Vec3 d = g.firstDerivative(t);
+  const double length = norm(d);
+  if (!m || !(length > 0)) return fallback;
+  const Vec3 u = d / length;
+  const auto& a = *m;  // xx, xy, xz, yy, yz, zz
+  const double q = a[0] * u.x * u.x + a[3] * u.y * u.y + a[5] * u.z * u.z +
+                   2 * (a[1] * u.x * u.y + a[2] * u.x * u.z + a[4] * u.y * u.z);
+  return q > 0 ? 1 / std::sqrt(q) : fallback;
+}
+
 // Bounds on the size besides the end points' sizes, at SizeIntegral's sample arc lengths: the
 // background field and the curvature bound (SizeRules::curvatureSize) of the curve and of the
 // surfaces it bounds, where they place it. Empty when neither applies.
@@ -200,6 +215,9 @@ std::vector<double> sampleSizeBounds(const Model& model, const ModelCurve& curve
   for (double t : ts) points.push_back(curve.geometry->point(t));
   std::vector<double> sizes(points.size(), 1e22);
   if (field) fields->evaluate(points, {1, curve.tag}, sizes);
+  if (field && rules.curvesAlongMetric && fields->hasAnisotropicBackground())
+    for (std::size_t k = 0; k < sizes.size(); ++k)
+      sizes[k] = sizeAlongMetric(*fields, *curve.geometry, curve.tag, ts[k], points[k], sizes[k]);
   for (std::size_t k = 0; k < sizes.size(); ++k)
     sizes[k] = std::min(sizes[k], rules.curvatureSize(curveCurvature(*curve.geometry, ts[k])));
   if (!(rules.elementsPerTwoPi > 0)) return sizes;

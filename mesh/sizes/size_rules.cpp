@@ -157,6 +157,7 @@ SizeRules SizeRules::from(const Model& model, const MeshOptions& options) {
   rules.elementsPerTwoPi = std::max(options.sizeFromCurvature, 0.0);
   rules.minCircleNodes = options.minCircleNodes;
   rules.minCurveNodes = options.minCurveNodes;
+  rules.curvesAlongMetric = options.algorithm2D == 7;
   const MeshConstraints& constraints = model.meshConstraints();
   if (options.recombinationAlgorithm == 1)
     for (const auto& [tag, surface] : model.surfaces())

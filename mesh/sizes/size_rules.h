@@ -39,6 +39,9 @@ struct SizeRules {
   // number of boundary edges: those bounding a surface (not transfinite) recombined by the
   // Blossom algorithm (Mesh.RecombinationAlgorithm 1), as the reference does.
   std::set<int> evenCurves = {};
+  // With the anisotropic 2D algorithm (Mesh.Algorithm 7), curves follow an anisotropic
+  // background along their tangent (size 1/sqrt(t'Mt)), as that algorithm's surfaces do.
+  bool curvesAlongMetric = false;
 
   static SizeRules from(const Model& model, const MeshOptions& options);
   // The sizes a curve's end points ask for, before clamping (their curvature bound aside).

@@ -1,6 +1,9 @@
 // Views in scripts: records of the parsed format, options, queries, deletion, background mesh.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <string>
+
 #include "script_runner.h"
 
 namespace geomesh::testing {
@@ -105,6 +108,72 @@ TEST(ViewStatements, ViewBoundsAreReadable) {
                     "Printf(\"%g %g %g %g %g %g\", View[0].MinX, View[0].MinY, View[0].MinZ, "
                     "View[0].MaxX, View[0].MaxY, View[0].MaxZ);\n"),
             "0.5 -1 0 3 4 2\n");
+}
+
+// Save View then Merge: the parsed .pos file gives back every record, value and text.
+TEST(ViewStatements, SavedPosFilesMergeBackUnchanged) {
+  const auto dir = std::filesystem::temp_directory_path() / "geomesh-view-roundtrip";
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "v.pos").string();
+  ScriptRun run;
+  run.run(
+      "View \"data\" {\n"
+      "  ST(0,0,0, 1,0,0, 0,1,0){0.1, 0.2, 1e-17, 1.5, 2.5, 3.5};\n"
+      "  VL(0,0,0, 1,1,1){1,2,3, 4,5,6, 7,8,9, 10,11,12};\n"
+      "  SS(0,0,0, 1,0,0, 0,1,0, 0,0,1){1,2,3,4, 5,6,7,8};\n"
+      "  TIME{0, 0.25};\n"
+      "  T2(5, 6, 0){\"first\", \"second\"};\n"
+      "};\n"
+      "Save View[0] \"" + file + "\";\n"
+      "Merge \"" + file + "\";\n");
+  const post::ViewStore& views = run.session.views();
+  ASSERT_EQ(views.size(), 2u);
+  const post::View& a = views.at(0);
+  const post::View& b = views.at(1);
+  EXPECT_EQ(b.name, "data");
+  EXPECT_EQ(b.times, a.times);
+  ASSERT_EQ(b.lists.size(), a.lists.size());
+  for (std::size_t k = 0; k < a.lists.size(); ++k) {
+    EXPECT_EQ(b.lists[k].shape, a.lists[k].shape);
+    EXPECT_EQ(b.lists[k].kind, a.lists[k].kind);
+    EXPECT_EQ(b.lists[k].steps, a.lists[k].steps);
+    EXPECT_EQ(b.lists[k].coordinates, a.lists[k].coordinates);
+    EXPECT_EQ(b.lists[k].values, a.lists[k].values);
+  }
+  ASSERT_EQ(b.texts.size(), 1u);
+  EXPECT_EQ(b.texts[0].text, (std::vector<std::string>{"first", "second"}));
+  std::filesystem::remove_all(dir);
+}
+
+// A view saved as .msh (its own nodes and elements, element-node data) merges back into an
+// empty model as a mesh and a view with the same values at the same places.
+TEST(ViewStatements, SavedMshFilesMergeBackWithTheirData) {
+  const auto dir = std::filesystem::temp_directory_path() / "geomesh-view-msh-roundtrip";
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "v.msh").string();
+  {
+    ScriptRun run;
+    run.run("View \"h\" {\n  ST(0,0,0, 1,0,0, 0,1,0){1, 2, 3};\n"
+            "  ST(1,0,0, 1,1,0, 0,1,0){2, 4, 3};\n};\n"
+            "Save View[0] \"" + file + "\";\n");
+  }
+  ScriptRun run;
+  run.run("Merge \"" + file + "\";\nPrintf(\"%g %g %g\", PostProcessing.NbViews, View[0].Min, "
+          "View[0].Max);\n");
+  EXPECT_EQ(run.out.str(), "1 1 4\n");
+  const post::View& view = run.session.views().at(0);
+  EXPECT_EQ(view.name, "h");
+  ASSERT_EQ(view.elementCount(), 2u);
+  // The value at node (1,1,0) is 4 wherever the element list holds it.
+  bool found = false;
+  for (const post::ElementList& list : view.lists)
+    for (std::size_t n = 0; n < list.coordinates.size() / 3; ++n)
+      if (list.coordinates[3 * n] == 1 && list.coordinates[3 * n + 1] == 1) {
+        EXPECT_EQ(list.values[n], 4);
+        found = true;
+      }
+  EXPECT_TRUE(found);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ViewStatements, ViewsOutliveNewModel) {
