@@ -12,7 +12,7 @@ constexpr std::string_view kCommandWords[] = {
     "Abort", "AdaptMesh", "Affine", "BSpline", "Background", "Bezier", "Block", "BooleanDifference",
     "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
     "CatmullRom", "Chamfer", "Characteristic", "Circle", "ClassifySurfaces", "Closest", "Coherence", "Cohomology",
-    "Color", "CombinedBoundary", "Compound", "Cone", "CreateGeometry", "CreateTopology", "Curve",
+    "Color", "Combine", "CombinedBoundary", "Compound", "Cone", "CreateGeometry", "CreateTopology", "Curve",
     "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Ellipsis", "Error", "Exit",
     "Extrude", "Field", "Fillet", "Filling", "General", "Geometry", "HealShapes", "Hide", "Hole",
     "Homology", "Include", "Layers", "Length", "Line", "Loop", "Merge", "Mesh", "MeshAlgorithm",

@@ -72,6 +72,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"Coherence Point", &Interpreter::executeCoherencePoints},
       {"Cohomology ...", &Interpreter::requestHomology},
       {"Color ...", &Interpreter::skipInBatch},
+      {"Combine ...", &Interpreter::combineViews},
       {"CombinedBoundary", &Interpreter::executeShapeOperation},
       {"Compound Curve", &Interpreter::executeCompound},
       {"Compound Line", &Interpreter::executeCompound},

@@ -11,6 +11,7 @@
 #include "interpreter/script_interpreter.h"
 #include "io/formats.h"
 #include "io/view_files.h"
+#include "mesh/views/view_combine.h"
 #include "stdlib/clamped_integer.h"
 
 namespace geomesh {
@@ -181,10 +182,11 @@ post::View& Interpreter::viewAt(const ast::Expr& index) {
 // defaults for the display only.
 void Interpreter::setViewOption(const ast::OptionAssignStmt& assign, const SourceLocation& where) {
   const std::string name = assign.path.substr(assign.path.find('.') + 1);
+  const bool colour = name == "ColorTable" || name.starts_with("Color.");
   if (!assign.index) {
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
                          assign.path + "' changes only the display");
-    evaluate(*assign.value);
+    if (!colour) evaluate(*assign.value);  // colours may be names: Red, {Green, Blue}
     return;
   }
   const double index = evaluateNumber(*assign.index);
@@ -197,7 +199,7 @@ void Interpreter::setViewOption(const ast::OptionAssignStmt& assign, const Sourc
     return;
   }
   post::View& view = session_.views().at(static_cast<std::size_t>(index));
-  if (name == "ColorTable" || name.starts_with("Color.")) {
+  if (colour) {
     // Colours (names, or lists of them) only change the display.
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
                          assign.path + "' changes only the display");
@@ -257,6 +259,26 @@ void Interpreter::checkFieldView(const std::string& type, const std::string& opt
     fail(where.loc, "Field " + type + "." + option + " = " + numberText(n) + ": no view " +
                         (byTag ? "has tag " : "has index ") + numberText(n) + " (" +
                         std::to_string(views.size()) + " views defined so far)");
+}
+
+// Combine ElementsByViewName; Combine TimeStepsByViewName; Combine Views; (or Elements)
+// Combine TimeSteps;
+void Interpreter::combineViews(const ast::CommandStmt& command, const SourceLocation& where) {
+  const ast::Expr* what = command.args.size() == 1 ? command.args[0].get() : nullptr;
+  const std::string how = what && what->kind == ast::ExprKind::Variable ? what->name.base : "";
+  int merged = 0;
+  if (how == "ElementsByViewName")
+    merged = post::combineElements(session_.views(), post::CombineGroups::ByName);
+  else if (how == "TimeStepsByViewName")
+    merged = post::combineTimeSteps(session_.views(), post::CombineGroups::ByName);
+  else if (how == "Views" || how == "Elements")
+    merged = post::combineElements(session_.views(), post::CombineGroups::All);
+  else if (how == "TimeSteps")
+    merged = post::combineTimeSteps(session_.views(), post::CombineGroups::All);
+  else
+    return unsupportedStatement(command, where);
+  session_.log().debug(where.file + ":" + std::to_string(where.line) + ": " +
+                       std::to_string(merged) + " views combined into others");
 }
 
 // Delete View[n];

@@ -23,7 +23,9 @@ struct Grid {
 
 int pointCount(const PluginOptions& options, const char* option) {
   const double n = options.number(option, 20);
-  if (n < 1) fail(kPlugin, optionText(option, n) + ": at least 1 point");
+  if (!(n >= 1)) fail(kPlugin, optionText(option, n) + ": at least 1 point");
+  // A grid of 1e8 points is far beyond what a view can show; refused rather than exhaust memory.
+  if (n > 1e4) fail(kPlugin, optionText(option, n) + ": at most 10000 points");
   return int(n);
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "stdlib/clamped_integer.h"
 #include "mesh/views/plugin_functions.h"
 
 namespace geomesh::post::plugins {
@@ -156,9 +157,9 @@ void integrate(const PluginOptions& options, PluginContext& context) {
   if (dimension > 3) fail(kPlugin, optionText("Dimension", dimension) + ": not 0 to 3");
   View result;
   if (overTime > -1)
-    integrateOverTime(view, int(overTime), result);
+    integrateOverTime(view, clampedInteger<int>(overTime), result);
   else
-    integrateOverSpace(view, int(dimension), result, context.log);
+    integrateOverSpace(view, clampedInteger<int>(dimension), result, context.log);
   View& added = context.views.add(view.name + "_Integrate");
   added.lists = std::move(result.lists);
   if (overTime <= -1) added.times = context.views.at(index).times;

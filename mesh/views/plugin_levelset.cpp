@@ -1,6 +1,9 @@
 // Plugins CutPlane, CutSphere and Isosurface: a view cut where a level function is zero,
 // element by element split into simplices (tetrahedra give triangles or quadrangles,
-// triangles give lines, lines give points), values interpolated linearly on the cut.
+// triangles give lines, lines give points), values interpolated linearly on the cut; or, with
+// ExtractVolume, the part of the elements on one side of the cut, as simplices of their own
+// dimension (elements wholly on that side are kept as they are).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -71,10 +74,11 @@ bool removeRepeats(std::vector<EdgePoint>& cut, const ElementList& list, std::si
   return dimension == 3 ? cut.size() >= 3 : cut.size() == std::size_t(dimension);
 }
 
-void appendCut(const std::vector<EdgePoint>& cut, const ElementList& list, std::size_t e,
-               const ValueSource& source, View& result) {
+// Appends the element of shape `shape` whose nodes are the points `cut` of element e.
+void appendCut(const std::vector<EdgePoint>& cut, ElementShape shape, const ElementList& list,
+               std::size_t e, const ValueSource& source, View& result) {
   const ElementList& values = *source.list;
-  ElementList& out = result.list(cutShape(shapeDimension(list.shape), cut.size()), values.kind, 1);
+  ElementList& out = result.list(shape, values.kind, 1);
   out.steps = source.stepCount;
   std::vector<Vec3> nodes;
   for (const EdgePoint& p : cut) {
@@ -99,21 +103,147 @@ void cutList(const ElementList& list, const LevelFunction& level, const ValueSou
     for (int i = 0; i < corners; ++i) levels[std::size_t(i)] = level(list, e, i);
     for (const std::vector<int>& part : parts) {
       std::vector<EdgePoint> cut = cutSimplex(part, levels);
-      if (!cut.empty() && removeRepeats(cut, list, e)) appendCut(cut, list, e, source, result);
+      if (!cut.empty() && removeRepeats(cut, list, e))
+        appendCut(cut, cutShape(shapeDimension(list.shape), cut.size()), list, e, source, result);
     }
   }
 }
 
-void rejectExtractVolume(const PluginOptions& options, std::string_view plugin) {
+// --- ExtractVolume: the part of the elements where the level (times the side) is positive.
+
+using Piece = std::vector<EdgePoint>;
+
+EdgePoint cornerPoint(int corner) {
+  return {corner, corner, 0};
+}
+
+// The three tetrahedra of a prism whose bottom p and top q are joined edge by edge.
+std::vector<Piece> splitPrism(const Piece& p, const Piece& q) {
+  return {{p[0], p[1], p[2], q[0]}, {p[1], p[2], q[0], q[1]}, {p[2], q[0], q[1], q[2]}};
+}
+
+// The part of a simplex (corners `s`) where `levels` is positive, as simplices of its dimension;
+// `inside` holds the corners of positive level, `outside` the others (both non-empty).
+std::vector<Piece> clipSimplex(const std::vector<int>& inside, const std::vector<int>& outside,
+                               const std::vector<double>& levels) {
+  const auto cut = [&](int a, int b) { return crossing(a, b, levels); };
+  const std::size_t corners = inside.size() + outside.size();
+  const int a = inside[0];
+  if (inside.size() == 1) {
+    Piece piece{cornerPoint(a)};
+    for (int o : outside) piece.push_back(cut(a, o));
+    return {piece};
+  }
+  if (corners == 3) {  // a triangle with two corners kept: a quadrangle, two triangles
+    const int b = inside[1], o = outside[0];
+    return {{cornerPoint(a), cornerPoint(b), cut(b, o)}, {cornerPoint(a), cut(b, o), cut(a, o)}};
+  }
+  if (inside.size() == 3) {  // a tetrahedron less a corner: a prism
+    const int b = inside[1], c = inside[2], o = outside[0];
+    return splitPrism({cornerPoint(a), cornerPoint(b), cornerPoint(c)},
+                      {cut(a, o), cut(b, o), cut(c, o)});
+  }
+  const int b = inside[1], o0 = outside[0], o1 = outside[1];  // two and two: a wedge
+  return splitPrism({cornerPoint(a), cut(a, o0), cut(a, o1)},
+                    {cornerPoint(b), cut(b, o0), cut(b, o1)});
+}
+
+Vec3 pointOf(const EdgePoint& p, const ElementList& list, std::size_t e) {
+  const Vec3 a = elementNode(list, e, p.a), b = elementNode(list, e, p.b);
+  return a + p.t * (b - a);
+}
+
+// A vector whose sign says which way a simplex of points turns: its volume, its normal or its
+// direction, for 4, 3 or 2 points.
+Vec3 orientation(const std::vector<Vec3>& p) {
+  if (p.size() == 4) return {dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0])), 0, 0};
+  if (p.size() == 3) return cross(p[1] - p[0], p[2] - p[0]);
+  return p[1] - p[0];
+}
+
+// Turns a piece as its parent simplex turns (tetrahedra stay positive if the parent is).
+void orientLike(Piece& piece, const std::vector<int>& parent, const ElementList& list,
+                std::size_t e) {
+  std::vector<Vec3> mine, theirs;
+  for (const EdgePoint& p : piece) mine.push_back(pointOf(p, list, e));
+  for (int corner : parent) theirs.push_back(elementNode(list, e, corner));
+  if (dot(orientation(mine), orientation(theirs)) < 0) std::swap(piece[0], piece[1]);
+}
+
+bool hasRepeats(const Piece& piece, const ElementList& list, std::size_t e) {
+  for (std::size_t i = 0; i < piece.size(); ++i)
+    for (std::size_t j = i + 1; j < piece.size(); ++j)
+      if (sameNode(piece[i], piece[j], list, e)) return true;
+  return false;
+}
+
+ElementShape simplexShape(std::size_t corners) {
+  return corners == 4   ? ElementShape::Tetrahedron
+         : corners == 3 ? ElementShape::Triangle
+                        : ElementShape::Line;
+}
+
+// Copies element e whole, with its values from the source.
+void appendWhole(const ElementList& list, std::size_t e, const ValueSource& source, View& result) {
+  const ElementList& values = *source.list;
+  ElementList& out = result.list(list.shape, values.kind, list.order);
+  out.nodesPerElement = list.nodesPerElement;
+  out.steps = source.stepCount;
+  std::vector<Vec3> nodes;
+  for (int i = 0; i < list.nodesPerElement; ++i) nodes.push_back(elementNode(list, e, i));
+  std::vector<double> data;
+  for (int s = source.firstStep; s < source.firstStep + source.stepCount; ++s)
+    for (int i = 0; i < list.nodesPerElement; ++i)
+      for (int c = 0; c < values.components(); ++c) data.push_back(values.value(e, s, i, c));
+  appendElement(out, nodes, data);
+}
+
+// Keeps the part of every element of `list` where side * level >= 0: whole elements when
+// no corner is on the other side, else the clipped simplices of their split.
+void extractList(const ElementList& list, const LevelFunction& level, int side,
+                 const ValueSource& source, View& result) {
+  const std::vector<std::vector<int>> parts = simplexSplit(list.shape);
+  const int corners = cornerCount(list.shape);
+  std::vector<double> levels(static_cast<std::size_t>(corners));
+  for (std::size_t e = 0; e < list.size(); ++e) {
+    for (int i = 0; i < corners; ++i) levels[std::size_t(i)] = side * level(list, e, i);
+    if (std::all_of(levels.begin(), levels.end(), [](double l) { return l >= 0; })) {
+      appendWhole(list, e, source, result);
+      continue;
+    }
+    for (const std::vector<int>& part : parts) {
+      std::vector<int> inside, outside;
+      for (int corner : part)
+        (levels[std::size_t(corner)] > 0 ? inside : outside).push_back(corner);
+      if (inside.empty()) continue;
+      for (Piece& piece : clipSimplex(inside, outside, levels)) {
+        if (hasRepeats(piece, list, e)) continue;
+        orientLike(piece, part, list, e);
+        appendCut(piece, simplexShape(piece.size()), list, e, source, result);
+      }
+    }
+  }
+}
+
+// The side ExtractVolume keeps: 1 (positive level), -1 (negative) or 0 (cut only).
+int extractSide(const PluginOptions& options) {
   const double extract = options.number("ExtractVolume", 0);
-  if (extract != 0)
-    fail(plugin, optionText("ExtractVolume", extract) + ": extracting volumes is not supported");
+  return extract > 0 ? 1 : extract < 0 ? -1 : 0;
+}
+
+// Cuts (side 0) or clips (side 1 or -1) the elements of `list`.
+void levelsetList(const ElementList& list, const LevelFunction& level, int side,
+                  const ValueSource& source, View& result) {
+  if (side == 0)
+    cutList(list, level, source, result);
+  else
+    extractList(list, level, side, source, result);
 }
 
 // Cuts the whole view (all steps) by a geometric level function: CutPlane, CutSphere.
 void cutByGeometry(const PluginOptions& options, PluginContext& context, std::string_view plugin,
                    const std::function<double(Vec3)>& level) {
-  rejectExtractVolume(options, plugin);
+  const int side = extractSide(options);
   const std::size_t index = viewIndex(options, context, plugin);
   const View& view = context.views.at(index);
   View result;
@@ -121,7 +251,7 @@ void cutByGeometry(const PluginOptions& options, PluginContext& context, std::st
     return level(elementNode(list, e, i));
   };
   for (const ElementList& list : view.lists)
-    if (list.size() > 0) cutList(list, nodeLevel, {&list, 0, list.steps}, result);
+    if (list.size() > 0) levelsetList(list, nodeLevel, side, {&list, 0, list.steps}, result);
   View& added = context.views.add(view.name + "_Levelset");
   added.lists = std::move(result.lists);
   added.times = context.views.at(index).times;
@@ -163,7 +293,7 @@ void cutSphere(const PluginOptions& options, PluginContext& context) {
 
 void isosurface(const PluginOptions& options, PluginContext& context) {
   constexpr std::string_view plugin = "Isosurface";
-  rejectExtractVolume(options, plugin);
+  const int side = extractSide(options);
   const double value = options.number("Value", 0);
   const std::size_t index = viewIndex(options, context, plugin);
   const View& view = context.views.at(index);
@@ -182,7 +312,7 @@ void isosurface(const PluginOptions& options, PluginContext& context) {
       if (list.size() == 0) continue;
       const ElementList& values = listLike(other, list);
       const int s = otherStep >= 0 ? otherStep : std::min(step, values.steps - 1);
-      cutList(list, level, {&values, s, 1}, result);
+      levelsetList(list, level, side, {&values, s, 1}, result);
     }
     View& added = context.views.add(view.name + "_Levelset_" + std::to_string(step));
     added.lists = std::move(result.lists);

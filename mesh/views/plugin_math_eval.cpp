@@ -1,10 +1,12 @@
 // Plugins MathEval and ModifyComponents: formulas of x, y, z, a view's components (v0..v8),
 // another view's (w0..w8), Time and TimeStep, evaluated at every node of a view.
 #include <array>
+#include <map>
 #include <exception>
 #include <string>
 #include <vector>
 
+#include "stdlib/clamped_integer.h"
 #include "mesh/views/plugin_functions.h"
 
 namespace geomesh::post::plugins {
@@ -179,7 +181,7 @@ void mathEval(const PluginOptions& options, PluginContext& context) {
   const View& view = context.views.at(index);
   const View& other = otherView(options, context, view, plugin);
   const EvalSetup setup{view, other, true, stepOption(options, view, plugin, "TimeStep", -1, true),
-                        int(options.number("OtherTimeStep", -1))};
+                        clampedInteger<int>(options.number("OtherTimeStep", -1))};
   View result;
   for (const ElementList& list : view.lists)
     if (list.size() > 0) evaluateList(setup, list, formulas, kindOfCount(last + 1), result, plugin);
@@ -188,6 +190,49 @@ void mathEval(const PluginOptions& options, PluginContext& context) {
   if (setup.step < 0) added.times = context.views.at(index).times;
 }
 
+namespace {
+
+// After the element lists changed in place, the data kept as a mesh file gave it must follow:
+// node data take the new values at their nodes (found by their coordinates, nodes numbered
+// as the mesh's, from 1); other kinds are dropped, the view then written from its lists.
+void refreshMeshData(View& view, const Mesh& mesh) {
+  if (!view.meshData) return;
+  MeshData& data = *view.meshData;
+  if (data.kind != MeshData::Kind::Node) {
+    view.meshData.reset();
+    return;
+  }
+  std::map<std::array<double, 3>, std::size_t> nodeAt;  // coordinates -> tag
+  for (const MeshData::Step& step : data.steps)
+    for (std::size_t tag : step.tags)
+      if (tag >= 1 && tag <= mesh.nodeCount()) {
+        const Vec3 p = mesh.node(static_cast<NodeIndex>(tag - 1));
+        nodeAt.emplace(std::array<double, 3>{p.x, p.y, p.z}, tag);
+      }
+  for (std::size_t s = 0; s < data.steps.size(); ++s) {
+    MeshData::Step& step = data.steps[s];
+    const int stepOfList = static_cast<int>(s);  // the lists hold the steps in this order
+    std::map<std::size_t, std::size_t> slot;  // tag -> position in the step
+    for (std::size_t k = 0; k < step.tags.size(); ++k) slot.emplace(step.tags[k], k);
+    const auto c = std::size_t(data.components);
+    for (const ElementList& list : view.lists) {
+      if (list.components() != data.components || stepOfList >= list.steps) continue;
+      for (std::size_t e = 0; e < list.size(); ++e)
+        for (int i = 0; i < list.nodesPerElement; ++i) {
+          const double* xyz = &list.coordinates[3 * (e * std::size_t(list.nodesPerElement) + std::size_t(i))];
+          const auto tag = nodeAt.find({xyz[0], xyz[1], xyz[2]});
+          if (tag == nodeAt.end()) continue;
+          const auto at = slot.find(tag->second);
+          if (at == slot.end()) continue;
+          for (std::size_t j = 0; j < c; ++j)
+            step.values[at->second * c + j] = list.value(e, stepOfList, i, int(j));
+        }
+    }
+  }
+}
+
+}  // namespace
+
 void modifyComponents(const PluginOptions& options, PluginContext& context) {
   constexpr std::string_view plugin = "ModifyComponents";
   const std::vector<CompiledFormula> formulas =
@@ -195,9 +240,10 @@ void modifyComponents(const PluginOptions& options, PluginContext& context) {
   View& view = context.views.at(viewIndex(options, context, plugin));
   const View& other = otherView(options, context, view, plugin);
   const EvalSetup setup{view, other, true, stepOption(options, view, plugin, "TimeStep", -1, true),
-                        int(options.number("OtherTimeStep", -1))};
+                        clampedInteger<int>(options.number("OtherTimeStep", -1))};
   for (ElementList& list : view.lists)
     if (list.size() > 0) modifyList(setup, list, formulas, plugin);
+  refreshMeshData(view, context.mesh);
 }
 
 }  // namespace geomesh::post::plugins

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/core/quality.h"
+#include "stdlib/clamped_integer.h"
 #include "mesh/views/element_size.h"
 #include "mesh/views/plugin_functions.h"
 
@@ -101,13 +102,13 @@ void elementSize(const PluginOptions& options, PluginContext& context) {
   View result;
   if (options.number("View", -1) >= 0) {
     const View& source = context.views.at(viewIndex(options, context, plugin));
-    int dim = int(dimension);
+    int dim = clampedInteger<int>(dimension);
     if (dim < 0)
       for (const ElementList& list : source.lists)
         if (list.size() > 0) dim = std::max(dim, shapeDimension(list.shape));
     viewElementSizes(source, dim, result);
   } else {
-    const int dim = dimension < 0 ? highestDimension(context.mesh) : int(dimension);
+    const int dim = dimension < 0 ? highestDimension(context.mesh) : clampedInteger<int>(dimension);
     if (dim == 0 || context.mesh.elementCount(dim) == 0)
       fail(plugin, "the mesh has no element of dimension " + std::to_string(dim));
     forEachMeshElement(context.mesh, dim,

@@ -1,5 +1,6 @@
 // Plugin Skin: the boundary of a view's elements (faces of volumes, edges of surfaces, end
-// points of lines) that belong to one element only, with their values.
+// points of lines) that belong to one element only, with their values; or (FromMesh = 1) the
+// boundary of the session mesh's volumes (or surfaces), as a view of zeros.
 #include <algorithm>
 #include <array>
 #include <map>
@@ -89,11 +90,61 @@ void appendFacet(const FacetUse& use, View& result) {
   appendElement(out, nodes, values);
 }
 
+// A facet of the mesh: its corners as its first element gives them, and how many hold it.
+struct MeshFacet {
+  std::vector<NodeIndex> corners;
+  std::size_t firstSeen;
+  int count;
+};
+
+// Every facet of the mesh's elements of dimension `dim`, keyed by its sorted corners.
+std::map<std::vector<NodeIndex>, MeshFacet> countMeshFacets(const Mesh& mesh, int dim) {
+  std::map<std::vector<NodeIndex>, MeshFacet> uses;
+  for (const auto& [id, entity] : mesh.entities()) {
+    if (id.dim != dim) continue;
+    for (const ElementBlock& block : entity.blocks) {
+      const std::vector<std::vector<int>> shapeFacets =
+          facets(ElementShape(static_cast<int>(family(block.type))));  // same order
+      for (std::size_t i = 0; i < block.size(); ++i)
+        for (const std::vector<int>& facet : shapeFacets) {
+          std::vector<NodeIndex> corners;
+          for (int corner : facet) corners.push_back(block.element(i)[std::size_t(corner)]);
+          std::vector<NodeIndex> key = corners;
+          std::sort(key.begin(), key.end());
+          auto [it, inserted] = uses.try_emplace(key, MeshFacet{corners, uses.size(), 0});
+          ++it->second.count;
+        }
+    }
+  }
+  return uses;
+}
+
+// The faces of the mesh's volumes held by one volume (or, without volumes, the edges of its
+// surfaces held by one surface element), as a new view "Skin" of zeros.
+void skinOfMesh(PluginContext& context) {
+  const Mesh& mesh = context.mesh;
+  const int dim = mesh.elementCount(3) > 0 ? 3 : mesh.elementCount(2) > 0 ? 2 : 0;
+  if (dim == 0) fail(kPlugin, "FromMesh = 1: the mesh has no volume or surface element");
+  const std::map<std::vector<NodeIndex>, MeshFacet> uses = countMeshFacets(mesh, dim);
+  std::vector<const MeshFacet*> boundary;
+  for (const auto& [key, use] : uses)
+    if (use.count == 1) boundary.push_back(&use);
+  std::sort(boundary.begin(), boundary.end(),
+            [](const MeshFacet* a, const MeshFacet* b) { return a->firstSeen < b->firstSeen; });
+  View result;
+  for (const MeshFacet* facet : boundary) {
+    std::vector<Vec3> nodes;
+    for (NodeIndex n : facet->corners) nodes.push_back(mesh.node(n));
+    appendElement(result.list(facetShape(nodes.size()), FieldKind::Scalar), nodes,
+                  std::vector<double>(nodes.size(), 0.0));
+  }
+  context.views.add("Skin").lists = std::move(result.lists);
+}
+
 }  // namespace
 
 void skin(const PluginOptions& options, PluginContext& context) {
-  if (options.number("FromMesh", 0) != 0)
-    fail(kPlugin, "FromMesh = 1: the skin of the mesh is not supported, only of a view");
+  if (options.number("FromMesh", 0) != 0) return skinOfMesh(context);
   const std::size_t index = viewIndex(options, context, kPlugin);
   const View& view = context.views.at(index);
   int dim = 0;

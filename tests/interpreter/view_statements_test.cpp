@@ -176,6 +176,45 @@ TEST(ViewStatements, SavedMshFilesMergeBackWithTheirData) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ViewStatements, CombineJoinsElementsOrTimeStepsByName) {
+  ScriptRun run;
+  run.run(
+      "View \"a\" { SP(0,0,0){1}; };\nView \"a\" { SP(1,0,0){2}; ST(0,0,0, 1,0,0, 0,1,0){1,1,1}; };\n"
+      "View \"b\" { SP(1,0,0){2}; };\n"
+      "Combine ElementsByViewName;\n"
+      "View \"c\" { SL(0,0,0, 1,0,0){1,2}; TIME{0.5}; };\n"
+      "View \"c\" { SL(0,0,0, 1,0,0){3,4}; TIME{1.5}; };\n"
+      "Combine TimeStepsByViewName;\n");
+  const post::ViewStore& views = run.session.views();
+  ASSERT_EQ(views.size(), 3u);
+  EXPECT_EQ(views.at(0).elementCount(), 3u);
+  EXPECT_EQ(views.at(0).lists[0].coordinates, (std::vector<double>{0, 0, 0, 1, 0, 0}));
+  const post::View& c = views.at(2);
+  EXPECT_EQ(c.stepCount(), 2);
+  EXPECT_EQ(c.lists[0].values, (std::vector<double>{1, 2, 3, 4}));
+  EXPECT_EQ(c.times, (std::vector<double>{0.5, 1.5}));
+}
+
+// A view on the mesh's nodes changed in place keeps its node data in step: saved as .msh,
+// it holds the new values.
+TEST(ViewStatements, NodeDataFollowChangesInPlace) {
+  ScriptRun run;
+  run.run(
+      "Point(1) = {0,0,0,0.3}; Point(2) = {1,0,0,0.3}; Point(3) = {1,1,0,0.3};\n"
+      "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"
+      "Curve Loop(1) = {1,2,3}; Plane Surface(1) = {1};\nMesh 2;\n"
+      "Plugin(NewView).Run;\n"
+      "Plugin(ModifyComponents).Expression0 = \"x + 2*y\";\nPlugin(ModifyComponents).Run;\n");
+  const post::View& view = run.session.views().at(0);
+  ASSERT_TRUE(view.meshData.has_value());
+  const post::MeshData::Step& step = view.meshData->steps.at(0);
+  ASSERT_EQ(step.tags.size(), run.session.mesh().nodeCount());
+  for (std::size_t k = 0; k < step.tags.size(); ++k) {
+    const Vec3 p = run.session.mesh().node(static_cast<NodeIndex>(step.tags[k] - 1));
+    EXPECT_DOUBLE_EQ(step.values[k], p.x + 2 * p.y) << "node " << step.tags[k];
+  }
+}
+
 TEST(ViewStatements, ViewsOutliveNewModel) {
   ScriptRun run;
   run.run("View \"a\" { SP(0,0,0){1}; };\nNewModel;\nPoint(1) = {0,0,0};\n");
