@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "stdlib/clamped_integer.h"
 #include "mesh/views/plugin_functions.h"
 
 namespace geomesh::post::plugins {
@@ -300,7 +301,7 @@ void isosurface(const PluginOptions& options, PluginContext& context) {
   const View& other = options.number("OtherView", -1) < 0
                           ? view
                           : context.views.at(viewIndex(options, context, plugin, "OtherView"));
-  const int otherStep = int(options.number("OtherTimeStep", -1));
+  const int otherStep = clampedInteger<int>(options.number("OtherTimeStep", -1));
   if (otherStep >= std::max(other.stepCount(), 1))
     fail(plugin, optionText("OtherTimeStep", otherStep) + ": no such step in OtherView");
   for (int step = 0; step < std::max(view.stepCount(), 1); ++step) {
