@@ -26,15 +26,16 @@ bool isOptionCategory(std::string_view path) {
          path.starts_with("Mesh.");
 }
 
-double combine(double old, double operand, const std::string& op) {
+}  // namespace
+
+// The value an option takes from `op` ("=", "+=", "-=", "*=", "/=") and its operand.
+double Interpreter::applyAssignment(double old, double operand, const std::string& op) {
   if (op == "+=") return old + operand;
   if (op == "-=") return old - operand;
   if (op == "*=") return old * operand;
   if (op == "/=") return old / operand;
   return operand;
 }
-
-}  // namespace
 
 // Error(...) and Warning(...) report a message of the script's at the statement.
 void Interpreter::executeMessage(const ast::CommandStmt& command, const SourceLocation& where) {
@@ -153,7 +154,7 @@ void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
     number = std::round(xs[0]) * 65536 + std::round(xs[1]) * 256 + std::round(xs[2]);
   else if (xs.size() != 1)
     fail(rhs.loc, "option '" + assign.path + "' takes a single number");
-  options.setNumber(assign.path, combine(options.number(assign.path), number, assign.op));
+  options.setNumber(assign.path, applyAssignment(options.number(assign.path), number, assign.op));
   optionChanged(option->name);
 }
 

@@ -235,6 +235,7 @@ class Interpreter {
   void setViewOption(const ast::OptionAssignStmt& assign, const SourceLocation& where);
   std::optional<Value> viewOptionValue(const ast::Expr& expr);
   void deleteView(const ast::CommandStmt& command, const SourceLocation& where);
+  static double applyAssignment(double old, double operand, const std::string& op);
   void combineViews(const ast::CommandStmt& command, const SourceLocation& where);
   void checkFieldView(const std::string& type, const std::string& option, const Value& value,
                       const ast::Expr& where);

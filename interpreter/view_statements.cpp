@@ -54,14 +54,6 @@ std::string numberText(double x) {
   return text;
 }
 
-double combined(double old, double operand, const std::string& op) {
-  if (op == "+=") return old + operand;
-  if (op == "-=") return old - operand;
-  if (op == "*=") return old * operand;
-  if (op == "/=") return old / operand;
-  return operand;
-}
-
 // View[n].MinX ... MaxZ: the view's bounding box (0 for a view without elements).
 std::optional<double> viewBound(const post::View& view, const std::string& name) {
   static const char* const kNames[] = {"MinX", "MinY", "MinZ", "MaxX", "MaxY", "MaxZ"};
@@ -215,7 +207,7 @@ void Interpreter::setViewOption(const ast::OptionAssignStmt& assign, const Sourc
   }
   if (value.isNumeric() && value.size() == 1) {
     double& slot = view.numbers[name];
-    slot = combined(slot, value.numbers().front(), assign.op);
+    slot = applyAssignment(slot, value.numbers().front(), assign.op);
     return;
   }
   session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +

@@ -25,27 +25,7 @@ int listNodeCount(ElementShape shape, int order) {
   return nodeCount(listElementType(shape, order));
 }
 
-ElementShape shapeOfType(ElementType type) {
-  switch (family(type)) {
-    case ElementFamily::Point:
-      return ElementShape::Point;
-    case ElementFamily::Line:
-      return ElementShape::Line;
-    case ElementFamily::Triangle:
-      return ElementShape::Triangle;
-    case ElementFamily::Quad:
-      return ElementShape::Quadrangle;
-    case ElementFamily::Tet:
-      return ElementShape::Tetrahedron;
-    case ElementFamily::Hex:
-      return ElementShape::Hexahedron;
-    case ElementFamily::Prism:
-      return ElementShape::Prism;
-    case ElementFamily::Pyramid:
-      return ElementShape::Pyramid;
-  }
-  return ElementShape::Point;
-}
+ElementShape shapeOfType(ElementType type) { return post::shapeOfFamily(family(type)); }
 
 int listOrderOfType(ElementType type) {
   const ElementShape shape = shapeOfType(type);

@@ -12,35 +12,6 @@
 namespace geomesh::post::plugins {
 namespace {
 
-ElementShape shapeOf(ElementFamily family) {
-  switch (family) {
-    case ElementFamily::Point:
-      return ElementShape::Point;
-    case ElementFamily::Line:
-      return ElementShape::Line;
-    case ElementFamily::Triangle:
-      return ElementShape::Triangle;
-    case ElementFamily::Quad:
-      return ElementShape::Quadrangle;
-    case ElementFamily::Tet:
-      return ElementShape::Tetrahedron;
-    case ElementFamily::Hex:
-      return ElementShape::Hexahedron;
-    case ElementFamily::Prism:
-      return ElementShape::Prism;
-    case ElementFamily::Pyramid:
-      return ElementShape::Pyramid;
-  }
-  return ElementShape::Point;
-}
-
-ElementFamily familyOf(ElementShape shape) {
-  constexpr ElementFamily kFamilies[kShapeCount] = {
-      ElementFamily::Point, ElementFamily::Line, ElementFamily::Triangle, ElementFamily::Quad,
-      ElementFamily::Tet,   ElementFamily::Hex,  ElementFamily::Prism,    ElementFamily::Pyramid};
-  return kFamilies[static_cast<int>(shape)];
-}
-
 int highestDimension(const Mesh& mesh) {
   for (int d = 3; d > 0; --d)
     if (mesh.elementCount(d) > 0) return d;
@@ -54,7 +25,7 @@ void forEachMeshElement(const Mesh& mesh, int dim, F&& f) {
   for (const auto& [id, entity] : mesh.entities()) {
     if (id.dim != dim) continue;
     for (const ElementBlock& block : entity.blocks) {
-      const ElementShape shape = shapeOf(elementInfo(block.type).family);
+      const ElementShape shape = shapeOfFamily(elementInfo(block.type).family);
       for (std::size_t i = 0; i < block.size(); ++i) {
         const std::span<const NodeIndex> nodes = block.element(i);
         corners.clear();
@@ -86,7 +57,7 @@ void viewElementSizes(const View& source, int dim, View& result) {
                                : list.shape == ElementShape::Prism       ? ElementType::Prism6
                                                                          : ElementType::Pyramid5;
       const double size =
-          equivalentElementSize(familyOf(list.shape), elementMeasure(scratch, type, indices));
+          equivalentElementSize(familyOfShape(list.shape), elementMeasure(scratch, type, indices));
       appendElement(out, nodes, std::vector<double>(std::size_t(corners), size));
     }
   }
@@ -115,7 +86,7 @@ void elementSize(const PluginOptions& options, PluginContext& context) {
                        [&](ElementShape shape, const std::vector<Vec3>& corners, ElementType type,
                            std::span<const NodeIndex> nodes) {
                          const double size = equivalentElementSize(
-                             familyOf(shape), elementMeasure(context.mesh, type, nodes));
+                             familyOfShape(shape), elementMeasure(context.mesh, type, nodes));
                          appendElement(result.list(shape, FieldKind::Scalar), corners,
                                        std::vector<double>(corners.size(), size));
                        });

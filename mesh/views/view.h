@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/core/element_type.h"
+
 namespace geomesh::post {
 
 // The element shapes a view holds, in the order of the parsed format's letters
@@ -21,6 +23,15 @@ inline constexpr int kShapeCount = 8;
 int cornerCount(ElementShape shape);     // 1, 2, 3, 4, 4, 8, 6, 5
 int shapeDimension(ElementShape shape);  // 0 .. 3
 char shapeLetter(ElementShape shape);    // 'P', 'L', 'T', 'Q', 'S', 'H', 'I', 'Y'
+// Mesh element families and view shapes name the same kinds in the same order.
+static_assert(static_cast<int>(ElementFamily::Pyramid) == static_cast<int>(ElementShape::Pyramid) &&
+              static_cast<int>(ElementFamily::Tet) == static_cast<int>(ElementShape::Tetrahedron));
+constexpr ElementShape shapeOfFamily(ElementFamily family) {
+  return static_cast<ElementShape>(family);
+}
+constexpr ElementFamily familyOfShape(ElementShape shape) {
+  return static_cast<ElementFamily>(shape);
+}
 
 // What each node carries: 1 (scalar), 3 (vector) or 9 (tensor, row by row) components.
 enum class FieldKind : std::uint8_t { Scalar, Vector, Tensor };
