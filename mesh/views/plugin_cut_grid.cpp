@@ -70,6 +70,9 @@ void cutGrid(const PluginOptions& options, PluginContext& context) {
   const Vec3 p0 = at("X0", "Y0", "Z0", {0, 0, 0});
   const Grid grid{p0, at("X1", "Y1", "Z1", {1, 0, 0}) - p0, at("X2", "Y2", "Z2", {0, 1, 0}) - p0,
                   pointCount(options, "NumPointsU"), pointCount(options, "NumPointsV")};
+  if (double(grid.nu) * double(grid.nv) > 4e6)
+    fail(kPlugin, "NumPointsU x NumPointsV = " + std::to_string(grid.nu) + " x " +
+                      std::to_string(grid.nv) + ": at most 4e6 points");
   const std::size_t index = viewIndex(options, context, kPlugin);
   const View& view = context.views.at(index);
   FieldKind kind = FieldKind::Scalar;
