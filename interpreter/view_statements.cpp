@@ -1,18 +1,17 @@
 // Views in scripts: View "name" {...}; View[n].Option = v and reading view options; Delete
 // View[n]; Background Mesh View[n]; Save View[n] "file"; merging view files.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <algorithm>
 
 #include "api/session.h"
 #include "interpreter/script_interpreter.h"
 #include "io/formats.h"
 #include "io/view_files.h"
 #include "mesh/views/view_combine.h"
-#include "stdlib/clamped_integer.h"
 
 namespace geomesh {
 
