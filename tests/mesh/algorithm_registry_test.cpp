@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/msh_writer.h"
+#include "geo_unit_square.h"
 #include "kernel/geo/geo_factory.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/pipeline/generate.h"
@@ -49,20 +50,6 @@ Model unitCube(double h) {
   return model;
 }
 
-Model unitSquare(double h) {
-  GeoFactory geo;
-  geo.addPoint(1, {0, 0, 0}, h);
-  geo.addPoint(2, {1, 0, 0}, h);
-  geo.addPoint(3, {1, 1, 0}, h);
-  geo.addPoint(4, {0, 1, 0}, h);
-  for (int k = 1; k <= 4; ++k) geo.addLine(k, k, k % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
-  Model model;
-  geo.synchronize(model);
-  return model;
-}
-
 std::string mshText(const Model& model, const Mesh& mesh) {
   std::ostringstream out;
   writeMsh(out, model, mesh, {});
@@ -90,7 +77,7 @@ TEST(SurfaceAlgorithms, RowsAreSortedAndNamesUnique) {
 }
 
 TEST(SurfaceAlgorithms, EveryAvailableCodeMeshesTheUnitSquare) {
-  const Model model = unitSquare(0.1);
+  const Model model = geoUnitSquare(0.1);
   for (const SurfaceAlgorithm& row : surfaceAlgorithms()) {
     if (!row.mesh) continue;
     SCOPED_TRACE(row.name);
@@ -110,7 +97,7 @@ TEST(SurfaceAlgorithms, EveryAvailableCodeMeshesTheUnitSquare) {
 }
 
 TEST(SurfaceAlgorithms, EveryUnavailableCodeFallsBackWithItsWarning) {
-  const Model model = unitSquare(0.1);
+  const Model model = geoUnitSquare(0.1);
   for (const SurfaceAlgorithm& row : surfaceAlgorithms()) {
     if (row.mesh) continue;
     SCOPED_TRACE(row.name);

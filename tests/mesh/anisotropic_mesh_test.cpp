@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "geo_unit_square.h"
 #include "kernel/geo/geo_factory.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/core/predicates.h"
@@ -248,20 +249,6 @@ TEST(AnisotropicMesh, TurningMetricIsFollowedEverywhere) {
   EXPECT_LT(triangles, 1.33 * expected);
 }
 
-Model unitSquare(double h) {
-  GeoFactory geo;
-  geo.addPoint(1, {0, 0, 0}, h);
-  geo.addPoint(2, {1, 0, 0}, h);
-  geo.addPoint(3, {1, 1, 0}, h);
-  geo.addPoint(4, {0, 1, 0}, h);
-  for (int k = 1; k <= 4; ++k) geo.addLine(k, k, k % 4 + 1);
-  geo.addCurveLoop(1, {1, 2, 3, 4});
-  geo.addPlaneSurface(1, {1});
-  Model model;
-  geo.synchronize(model);
-  return model;
-}
-
 MeshOptions algorithm7() {
   MeshOptions options;
   options.algorithm2D = 7;
@@ -273,7 +260,7 @@ MeshOptions algorithm7() {
 TEST(AnisotropicMesh, WithoutBackgroundSizesGrowFromTheBoundary) {
   Mesh mesh;
   testing::RecordingSink log;
-  const Model model = unitSquare(0.1);
+  const Model model = geoUnitSquare(0.1);
   generateMesh(model, algorithm7(), 2, mesh, log);
   EXPECT_TRUE(log.warnings.empty());
   const MeshCheckReport report = checkMesh(model, mesh);
@@ -306,7 +293,7 @@ std::pair<double, double> lengthAndElongation(const Mesh& mesh, Metric2 metric) 
 // 2210 triangles and 1216 nodes, its curves along x cut in 10 segments; the 1D stage here cuts
 // them at the metric's smallest size (100 segments), which adds nodes along them.
 TEST(AnisotropicMesh, MathEvalAnisoBackgroundIsFollowed) {
-  Model model = unitSquare(0.1);
+  Model model = geoUnitSquare(0.1);
   SizeFieldDefinition field{"MathEvalAniso", {}, {}};
   for (const char* name : {"M12", "M13", "M23"}) field.strings[name] = "0";
   field.strings["M11"] = "100";
