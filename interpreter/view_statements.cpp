@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <system_error>
 #include <fstream>
 #include <optional>
 
@@ -335,7 +336,8 @@ void Interpreter::mergeViewFile(const ast::CommandStmt& command, const SourceLoc
   std::filesystem::path path = evaluateString(name);
   if (path.is_relative()) path = std::filesystem::path(directoryOf(where.file)) / path;
   const std::string shown = path.lexically_normal().string();
-  if (!std::filesystem::exists(path)) fail(name.loc, "cannot open '" + shown + "'");
+  std::error_code unreadable;
+  if (!std::filesystem::exists(path, unreadable)) fail(name.loc, "cannot open '" + shown + "'");
   try {
     if (!isListBasedPosFile(shown)) return executeInclude(command, where);
     const int added = readListBasedPos(shown, session_.views());

@@ -2,6 +2,7 @@
 #include "io/atomic_file.h"
 
 #include <filesystem>
+#include <system_error>
 #include <fstream>
 #include <new>
 #include <stdexcept>
@@ -52,7 +53,8 @@ void writeFileAtomicallyByPath(const std::string& path,
                                const std::function<void(const std::string&)>& write) {
   replaceAtomically(path, [&](const std::filesystem::path& partial) {
     write(partial.string());
-    if (!std::filesystem::exists(partial))
+    std::error_code unreadable;
+    if (!std::filesystem::exists(partial, unreadable))
       throw std::runtime_error("no file was written at '" + partial.string() + "'");
   });
 }

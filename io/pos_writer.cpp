@@ -1,5 +1,6 @@
 // Writing views: the parsed .pos format, and writeView choosing the format by extension.
 #include <filesystem>
+#include <system_error>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -84,7 +85,8 @@ void writeView(const post::View& view, const std::string& path, const Mesh& mesh
                bool append) {
   const std::string ext = extensionOf(path);
   std::string before;
-  if (append && std::filesystem::exists(path)) before = readViewFile(path);
+  std::error_code unreadable;
+  if (append && std::filesystem::exists(path, unreadable)) before = readViewFile(path);
   if (ext == ".pos") {
     writeFileAtomically(path, [&](std::ostream& out) {
       out << before;

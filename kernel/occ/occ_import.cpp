@@ -20,6 +20,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <system_error>
 #include <optional>
 #include <string>
 
@@ -61,7 +62,8 @@ void setTargetUnit(const std::string& unit) {
 }
 
 TopoDS_Shape readShape(const std::string& path, const std::string& targetUnit) {
-  if (!std::filesystem::exists(path))
+  std::error_code unreadable;  // a name too long for the system, say: not a file either
+  if (!std::filesystem::exists(path, unreadable))
     throw GeometryError("cannot open '" + path + "': no such file");
   const std::string ext = lowerExtension(path);
   if (ext == ".step" || ext == ".stp") {

@@ -215,6 +215,18 @@ TEST(ViewStatements, NodeDataFollowChangesInPlace) {
   }
 }
 
+// A name longer than the system takes is no file: a located error, never an escaped exception.
+TEST(ViewStatements, OverlongFileNamesAreLocatedErrors) {
+  const std::string name(5000, 'a');
+  for (const std::string& script :
+       {"Merge \"" + name + ".pos\";\n",
+        "SetFactory(\"OpenCASCADE\");\nMerge \"" + name + ".step\";\n"}) {
+    const std::string error = firstLineOf(script);
+    EXPECT_EQ(error.rfind("test.geo:", 0), 0u) << error.substr(0, 80);
+    EXPECT_NE(error.find("cannot open"), std::string::npos) << error.substr(0, 80);
+  }
+}
+
 TEST(ViewStatements, ViewsOutliveNewModel) {
   ScriptRun run;
   run.run("View \"a\" { SP(0,0,0){1}; };\nNewModel;\nPoint(1) = {0,0,0};\n");
