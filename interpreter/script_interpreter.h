@@ -231,6 +231,7 @@ class Interpreter {
   // files (view_statements.cpp)
   void defineView(const ast::CommandStmt& command, const SourceLocation& where);
   void addViewRecord(post::View& view, const ast::ViewItem& item);
+  std::size_t viewIndexAt(const ast::Expr& index);
   post::View& viewAt(const ast::Expr& index);
   void setViewOption(const ast::OptionAssignStmt& assign, const SourceLocation& where);
   std::optional<Value> viewOptionValue(const ast::Expr& expr);

@@ -2,7 +2,6 @@
 // View[n]; Background Mesh View[n]; Save View[n] "file"; merging view files.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <system_error>
 #include <fstream>
@@ -13,6 +12,8 @@
 #include "io/formats.h"
 #include "io/view_files.h"
 #include "mesh/views/view_combine.h"
+#include "stdlib/clamped_integer.h"
+#include "stdlib/format.h"
 
 namespace geomesh {
 
@@ -49,9 +50,8 @@ RecordType recordType(const std::string& type) {
 }
 
 std::string numberText(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", x);
-  return text;
+  const FormatArgument shown[] = {x};
+  return formatPrintf("%g", shown);
 }
 
 // View[n].MinX ... MaxZ: the view's bounding box (0 for a view without elements).
@@ -158,45 +158,59 @@ void Interpreter::addViewRecord(post::View& view, const ast::ViewItem& item) {
   list.values.insert(list.values.end(), values.begin(), values.end());
 }
 
-// The view a script names by index (View[n], Delete View[n], ...), or a located error.
-post::View& Interpreter::viewAt(const ast::Expr& index) {
+namespace {
+
+// The view at index n; null when n names none.
+post::View* viewIndexed(post::ViewStore& views, double n) {
+  if (!(n >= 0) || n != std::floor(n) || n >= double(views.size())) return nullptr;
+  return &views.at(static_cast<std::size_t>(n));
+}
+
+// "no view 3 (views are numbered 0 to 1)": why index n names no view.
+std::string noViewAt(const post::ViewStore& views, double n) {
+  const auto count = views.size();
+  return "no view " + numberText(n) + " (" +
+         (count == 0 ? std::string("there is no view")
+                     : "views are numbered 0 to " + std::to_string(count - 1)) +
+         ")";
+}
+
+}  // namespace
+
+// The index of the view a script names (View[n], Delete View[n], ...), or a located error.
+std::size_t Interpreter::viewIndexAt(const ast::Expr& index) {
   const double n = evaluateNumber(index);
-  const auto count = session_.views().size();
-  if (!(n >= 0) || n != std::floor(n) || n >= double(count))
-    fail(index.loc, "no view " + numberText(n) + " (" +
-                        (count == 0 ? std::string("there is no view")
-                                    : "views are numbered 0 to " + std::to_string(count - 1)) +
-                        ")");
-  return session_.views().at(static_cast<std::size_t>(n));
+  if (!viewIndexed(session_.views(), n)) fail(index.loc, noViewAt(session_.views(), n));
+  return static_cast<std::size_t>(n);
+}
+
+post::View& Interpreter::viewAt(const ast::Expr& index) {
+  return session_.views().at(viewIndexAt(index));
 }
 
 // View[n].X = v; (a number, a text, or a list such as a colour table); View.X = v sets
 // defaults for the display only.
 void Interpreter::setViewOption(const ast::OptionAssignStmt& assign, const SourceLocation& where) {
   const std::string name = assign.path.substr(assign.path.find('.') + 1);
+  // Colours (names, or lists of them: Red, {Green, Blue}) only change the display.
   const bool colour = name == "ColorTable" || name.starts_with("Color.");
-  if (!assign.index) {
+  const auto displayOnly = [&] {
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
                          assign.path + "' changes only the display");
-    if (!colour) evaluate(*assign.value);  // colours may be names: Red, {Green, Blue}
+  };
+  if (!assign.index) {
+    displayOnly();
+    if (!colour) evaluate(*assign.value);
     return;
   }
   const double index = evaluateNumber(*assign.index);
-  if (!(index >= 0) || index != std::floor(index) || index >= double(session_.views().size())) {
-    const auto count = session_.views().size();
-    warn(where, "no view " + numberText(index) + " (" +
-                    (count == 0 ? std::string("there is no view")
-                                : "views are numbered 0 to " + std::to_string(count - 1)) +
-                    "); option '" + assign.path + "' ignored");
+  post::View* found = viewIndexed(session_.views(), index);
+  if (!found) {
+    warn(where, noViewAt(session_.views(), index) + "; option '" + assign.path + "' ignored");
     return;
   }
-  post::View& view = session_.views().at(static_cast<std::size_t>(index));
-  if (colour) {
-    // Colours (names, or lists of them) only change the display.
-    session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
-                         assign.path + "' changes only the display");
-    return;
-  }
+  if (colour) return displayOnly();
+  post::View& view = *found;
   const Value value = evaluate(*assign.value);
   if (value.isText() && value.size() == 1) {
     if (name == "Name")
@@ -245,7 +259,7 @@ void Interpreter::checkFieldView(const std::string& type, const std::string& opt
   const double n = value.numbers().front();
   if (byIndex && n < 0) return;  // -1: unset
   const post::ViewStore& views = session_.views();
-  const bool found = byTag ? n == std::floor(n) && views.indexOfTag(static_cast<int>(n)) >= 0
+  const bool found = byTag ? n == std::floor(n) && views.indexOfTag(clampedInteger<int>(n)) >= 0
                            : n == std::floor(n) && n < double(views.size());
   if (!found)
     fail(where.loc, "Field " + type + "." + option + " = " + numberText(n) + ": no view " +
@@ -277,8 +291,7 @@ void Interpreter::combineViews(const ast::CommandStmt& command, const SourceLoca
 void Interpreter::deleteView(const ast::CommandStmt& command, const SourceLocation& where) {
   if (command.argStyle != ast::CommandStmt::Args::Bracket || command.args.size() != 1)
     return unsupportedStatement(command, where);
-  const post::View& view = viewAt(*command.args[0]);
-  session_.views().remove(static_cast<std::size_t>(session_.views().indexOfTag(view.tag)));
+  session_.views().remove(viewIndexAt(*command.args[0]));
 }
 
 // Background Mesh View[n]; the view's values are the mesh sizes (with a Background Field
@@ -286,7 +299,8 @@ void Interpreter::deleteView(const ast::CommandStmt& command, const SourceLocati
 void Interpreter::setBackgroundView(const ast::CommandStmt& command, const SourceLocation& where) {
   if (command.argStyle != ast::CommandStmt::Args::Bracket || command.args.size() != 1)
     return unsupportedStatement(command, where);
-  const post::View& view = viewAt(*command.args[0]);
+  const std::size_t index = viewIndexAt(*command.args[0]);
+  const post::View& view = session_.views().at(index);
   if (view.elementCount() == 0)
     fail(command.args[0]->loc, "view '" + view.name + "' has no element to read sizes from");
   for (const post::ElementList& list : view.lists)
@@ -303,7 +317,7 @@ void Interpreter::setBackgroundView(const ast::CommandStmt& command, const Sourc
                ", " + numberText(at[1]) + ", " + numberText(at[2]) +
                "): background sizes must be positive numbers");
     }
-  session_.model().meshConstraints().backgroundView = session_.views().indexOfTag(view.tag);
+  session_.model().meshConstraints().backgroundView = static_cast<int>(index);
 }
 
 // Save View[n] "file.pos" | "file.msh";

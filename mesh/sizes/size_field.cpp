@@ -112,6 +112,11 @@ void readStrings(SizeFields::Field& f, const std::string& field, const SizeField
   }
 }
 
+// I/h^2 for a size h; a size <= 0 or not finite asks for nothing.
+SymmetricTensor sizeTensor(double h) {
+  return isotropicTensor(h > 0 && std::isfinite(h) ? h : kUnbounded);
+}
+
 // A PostView field's view, indexed; a missing view is reported and leaves the field unset.
 void precomputePostView(SizeFields::Field& f, const std::string& field,
                         const MeshOptions& options, MessageSink& log) {
@@ -396,7 +401,7 @@ std::array<double, 6> SizeFields::fieldMetric(const Field& f, Vec3 p, EntityId w
   if (f.type == Type::PostView && f.view && f.view->anisotropic())
     if (const auto t = f.view->tensor(p)) return *t;
   const double h = evaluateField(f, p, where, 1);
-  return isotropicTensor(h > 0 && std::isfinite(h) ? h : kUnbounded);
+  return sizeTensor(h);
 }
 
 std::optional<std::array<double, 6>> SizeFields::metric(Vec3 point, EntityId where) const {
@@ -408,7 +413,7 @@ std::optional<std::array<double, 6>> SizeFields::metric(Vec3 point, EntityId whe
     std::optional<SymmetricTensor> t = backgroundView_->tensor(point);
     if (!t) {
       const double h = backgroundView_->size(point);
-      t = isotropicTensor(h > 0 && std::isfinite(h) ? h : kUnbounded);
+      t = sizeTensor(h);
     }
     const SymmetricTensor v = boundedAnisotropy(*t, anisoMax_);
     m = m ? boundedAnisotropy(intersectMetrics(*m, v), anisoMax_) : v;

@@ -405,22 +405,15 @@ double largestInteriorSize(const Triangulation2D& tri, const SurfaceInput& in,
   return largest;
 }
 
-// The surface's tangents along the work plane's axes at a work-plane point: a work-plane
-// vector d is the surface vector d.u t1 + d.v t2 there.
-std::pair<Vec3, Vec3> workTangents(const SurfaceGeometry& g, const WorkFrame& frame, Vec2 work) {
-  const SurfaceDerivatives d = g.firstDerivatives(frame.toParam(work));
-  const Vec2 o = frame.toParam({0, 0}), s1 = frame.toParam({1, 0}), s2 = frame.toParam({0, 1});
-  return {(s1.u - o.u) * d.du + (s1.v - o.v) * d.dv, (s2.u - o.u) * d.du + (s2.v - o.v) * d.dv};
-}
-
 // The metric the anisotropic algorithm follows: the background's (SizeFields::metric, a 3D
 // tensor restricted to the surface), its sizes clamped and scaled as Mesh.MeshSizeMin/Max and
 // Mesh.MeshSizeFactor say, intersected with the curvature's isotropic bound when asked for.
-Metric2 backgroundMetric(const SurfaceGeometry& g, const WorkFrame& frame, EntityId id,
+Metric2 backgroundMetric(const SurfaceGeometry& g, const WorkFrame& frame,
+                         const SurfaceMetric& lengthsOnSurface, EntityId id,
                          const SizeRules& rules, const SizeFields* fields, bool withCurvature,
                          const AnisotropicSettings& settings, Vec2 work) {
   const Vec2 uv = frame.toParam(work);
-  const auto [t1, t2] = workTangents(g, frame, work);
+  const auto [t1, t2] = lengthsOnSurface.tangents(work);
   const Metric2 lengths{dot(t1, t1), dot(t1, t2), dot(t2, t2)};
   if (!isPositiveDefinite(lengths)) return {};  // a pole: the other algorithms' fallback too
   const MetricFrame surface(lengths);
@@ -492,8 +485,8 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   const std::uint32_t firstMovable =
       firstSeed(in) + static_cast<std::uint32_t>(in.seeds.size());
   const WorkPlaneMetric anisotropic = [&](Vec2 work) {
-    return backgroundMetric(g, frame, id, rules, withField ? fields : nullptr, withCurvature,
-                            anisotropy, work);
+    return backgroundMetric(g, frame, metric, id, rules, withField ? fields : nullptr,
+                            withCurvature, anisotropy, work);
   };
   SurfaceInterior interior{tri,
                            inside,

@@ -26,13 +26,21 @@ Vec2 WorkFrame::toParam(Vec2 w) const {
   return {origin_.u + du, origin_.v + dv};
 }
 
-Metric2 SurfaceMetric::at(Vec2 work) const {
+SurfaceMetric::SurfaceMetric(const SurfaceGeometry& g, const WorkFrame& frame)
+    : g_(g), frame_(frame) {
+  const Vec2 origin = frame.toParam({0, 0});
+  const Vec2 s1 = frame.toParam({1, 0}), s2 = frame.toParam({0, 1});
+  axisU_ = {s1.u - origin.u, s1.v - origin.v};
+  axisV_ = {s2.u - origin.u, s2.v - origin.v};
+}
+
+std::pair<Vec3, Vec3> SurfaceMetric::tangents(Vec2 work) const {
   const SurfaceDerivatives d = g_.firstDerivatives(frame_.toParam(work));
-  // Surface tangents along the work-plane axes: the parameter steps of unit work steps.
-  const Vec2 origin = frame_.toParam({0, 0});
-  const Vec2 s1 = frame_.toParam({1, 0}), s2 = frame_.toParam({0, 1});
-  const Vec3 t1 = (s1.u - origin.u) * d.du + (s1.v - origin.v) * d.dv;
-  const Vec3 t2 = (s2.u - origin.u) * d.du + (s2.v - origin.v) * d.dv;
+  return {axisU_.u * d.du + axisU_.v * d.dv, axisV_.u * d.du + axisV_.v * d.dv};
+}
+
+Metric2 SurfaceMetric::at(Vec2 work) const {
+  const auto [t1, t2] = tangents(work);
   const Metric2 m{dot(t1, t1), dot(t1, t2), dot(t2, t2)};
   if (!(m.a > 0) || !(m.a * m.c - m.b * m.b > 0)) return {};  // singular point: Euclidean
   return m;

@@ -1,6 +1,8 @@
 // WorkFrame, Metric2, SurfaceMetric and MetricFrame: lengths on a surface from its work plane.
 #pragma once
 
+#include <utility>
+
 #include "kernel/geometry.h"
 
 namespace geomesh {
@@ -29,12 +31,16 @@ struct Metric2 {
 // surface at a work-plane point, expressed in work coordinates.
 class SurfaceMetric {
  public:
-  SurfaceMetric(const SurfaceGeometry& g, const WorkFrame& frame) : g_(g), frame_(frame) {}
+  SurfaceMetric(const SurfaceGeometry& g, const WorkFrame& frame);
   Metric2 at(Vec2 work) const;
+  // The surface's tangents along the work plane's two axes at a work-plane point: a
+  // work-plane vector d is the surface vector d.u t1 + d.v t2 there.
+  std::pair<Vec3, Vec3> tangents(Vec2 work) const;
 
  private:
   const SurfaceGeometry& g_;
   const WorkFrame& frame_;
+  Vec2 axisU_, axisV_;  // parameter steps of unit work steps (the frame is affine)
 };
 
 // The linear map L with M = L^T L (Cholesky): lengths under M are Euclidean lengths after L.

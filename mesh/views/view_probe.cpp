@@ -56,30 +56,30 @@ void tetrahedronFunctions(const double* r, ShapeValues& s) {
   }
 }
 
-void hexahedronFunctions(const double* r, ShapeValues& s) {
-  ShapeValues base;
-  quadrangleFunctions(r, base);
-  for (int i = 0; i < 8; ++i) {
-    const int b = i % 4;
-    const double fw = i < 4 ? 1 - r[2] : r[2];
+// A base shape (its `corners` functions in u, v) times [0, 1] in w: the base's corners at
+// w = 0, then again at w = 1.
+void extrudedFunctions(const ShapeValues& base, int corners, const double* r, ShapeValues& s) {
+  for (int i = 0; i < 2 * corners; ++i) {
+    const int b = i % corners;
+    const bool top = i >= corners;
+    const double fw = top ? r[2] : 1 - r[2];
     s.n[i] = base.n[b] * fw;
     s.du[i] = base.du[b] * fw;
     s.dv[i] = base.dv[b] * fw;
-    s.dw[i] = base.n[b] * (i < 4 ? -1 : 1);
+    s.dw[i] = base.n[b] * (top ? 1 : -1);
   }
+}
+
+void hexahedronFunctions(const double* r, ShapeValues& s) {
+  ShapeValues base;
+  quadrangleFunctions(r, base);
+  extrudedFunctions(base, 4, r, s);
 }
 
 void prismFunctions(const double* r, ShapeValues& s) {
   ShapeValues base;
   triangleFunctions(r, base);
-  for (int i = 0; i < 6; ++i) {
-    const int b = i % 3;
-    const double fw = i < 3 ? 1 - r[2] : r[2];
-    s.n[i] = base.n[b] * fw;
-    s.du[i] = base.du[b] * fw;
-    s.dv[i] = base.dv[b] * fw;
-    s.dw[i] = base.n[b] * (i < 3 ? -1 : 1);
-  }
+  extrudedFunctions(base, 3, r, s);
 }
 
 // The rational pyramid functions (1 + xi u - w)(1 + eta v - w) / (4 (1 - w)) and w: they

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "tests/scratch.h"
+#include "tests/io/scratch_files.h"
 
 namespace geomesh {
 namespace {
@@ -18,16 +18,10 @@ namespace {
 using post::ElementShape;
 using post::FieldKind;
 
-class ViewFiles : public ::testing::Test {
+class ViewFiles : public ScratchFiles {
  protected:
-  void SetUp() override { std::filesystem::create_directories(dir_); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  ViewFiles() : ScratchFiles("view-files") {}
 
-  std::string file(const std::string& name, const std::string& content) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
   static std::string contentOf(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::stringstream s;
@@ -45,7 +39,6 @@ class ViewFiles : public ::testing::Test {
     return "no error";
   }
 
-  std::filesystem::path dir_ = scratch::path("view-files");
 };
 
 post::View smallView() {

@@ -11,7 +11,7 @@
 #include "io/msh_reader.h"
 #include "io/msh_writer.h"
 #include "io/view_files.h"
-#include "tests/scratch.h"
+#include "tests/io/scratch_files.h"
 
 namespace geomesh {
 namespace {
@@ -112,16 +112,10 @@ $ElementNodeData
 $EndElementNodeData
 )";
 
-class ViewMsh : public ::testing::Test {
+class ViewMsh : public ScratchFiles {
  protected:
-  void SetUp() override { std::filesystem::create_directories(dir_); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  ViewMsh() : ScratchFiles("view-msh") {}
 
-  std::string file(const std::string& name, const std::string& content) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
   // The mesh and views of an MSH file, as a merge reads them.
   void read(const std::string& path) {
     Model model;
@@ -138,7 +132,6 @@ class ViewMsh : public ::testing::Test {
     return "no error";
   }
 
-  std::filesystem::path dir_ = scratch::path("view-msh");
   Mesh mesh_;
   post::ViewStore views_;
 };

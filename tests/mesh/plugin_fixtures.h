@@ -57,4 +57,13 @@ inline double surfaceArea(const View& view) {
   return area;
 }
 
+// The linear field the plugin tests cut, integrate and evaluate.
+inline double linearField(Vec3 p) { return p.x + 2 * p.y + 3 * p.z; }
+
+// Node i of element e of a list.
+inline Vec3 nodeOf(const ElementList& list, std::size_t e, int i) {
+  const std::size_t k = 3 * (e * std::size_t(list.nodesPerElement) + std::size_t(i));
+  return {list.coordinates[k], list.coordinates[k + 1], list.coordinates[k + 2]};
+}
+
 }  // namespace geomesh::post::testing

@@ -14,14 +14,8 @@ namespace {
 using testing::addTetCube;
 using testing::surfaceArea;
 
-double linearField(Vec3 p) {
-  return p.x + 2 * p.y + 3 * p.z;
-}
-
-Vec3 nodeOf(const ElementList& list, std::size_t e, int i) {
-  const std::size_t k = 3 * (e * std::size_t(list.nodesPerElement) + std::size_t(i));
-  return {list.coordinates[k], list.coordinates[k + 1], list.coordinates[k + 2]};
-}
+using testing::linearField;
+using testing::nodeOf;
 
 struct PluginsTest : ::testing::Test {
   ViewStore views;
