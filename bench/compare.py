@@ -5,6 +5,9 @@ run, and reports wall times, peak memory, mesh sizes, throughput and ratios.
 
     python3 bench/compare.py                       # every case
     python3 bench/compare.py square_uniform        # one case
+
+3D cases run the reference twice, its default (Delaunay) and HXT (`-algo hxt`), and report
+tetrahedra, nodes and the tetrahedra's gamma as geomesh's `-check` of each file gives it.
 """
 import argparse
 import json
@@ -29,7 +32,15 @@ CASES = {
     # CAD surfaces costs over plane ones.
     "cad_part": ("cad_part.geo", ["-2"], "2D"),
     "square_like_cad_part": ("square_uniform.geo", ["-2", "-setnumber", "lc", "0.0035"], "2D"),
+    "cube_uniform": ("cube_uniform.geo", ["-3"], "3D"),
+    "cube_uniform_small": ("cube_uniform.geo", ["-3", "-setnumber", "lc", "0.05"], "3D"),
 }
+
+# The reference's runs of a 3D case: (row name, extra arguments).
+REFERENCE_3D = (("ref-del", []), ("ref-hxt", ["-algo", "hxt"]))
+
+# MSH element type of a 4-node tetrahedron.
+TETRAHEDRON = 4
 
 # Cases whose script reads a file that another script makes: (script, what it writes). Both
 # are copied to the work directory and the maker runs there, once, with geomesh.
@@ -46,6 +57,12 @@ def ensure_reference(modules=("gmsh",)):
     if probe.returncode != 0:
         subprocess.run([str(python), "-m", "pip", "install", "-q", *modules], check=True)
     return python
+
+
+def reference_command(python):
+    """The command that runs the reference like its executable: arguments follow it."""
+    return [str(python), "-c",
+            "import sys, gmsh; gmsh.initialize(['gmsh'] + sys.argv[1:], run=True); gmsh.finalize()"]
 
 
 def measure(cmd, cwd):
@@ -74,21 +91,27 @@ def stage_seconds(log, stage):
     return float(m.group(1)) if m else None
 
 
-def triangles(msh_path):
-    """Number of 3-node triangles in an MSH 4.1 ASCII file."""
-    count = 0
+def msh_counts(msh_path):
+    """(nodes, {element type: count}) of an MSH 4.1 ASCII file."""
+    nodes, counts = 0, {}
     with open(msh_path) as f:
         for line in f:
-            if line.startswith("$Elements"):
+            if line.startswith("$Nodes"):
+                nodes = int(next(f).split()[1])
+            elif line.startswith("$Elements"):
                 break
         blocks = int(next(f).split()[0])
         for _ in range(blocks):
             _, _, element_type, n = (int(x) for x in next(f).split())
-            if element_type == 2:
-                count += n
+            counts[element_type] = counts.get(element_type, 0) + n
             for _ in range(n):
                 next(f)
-    return count
+    return nodes, counts
+
+
+def triangles(msh_path):
+    """Number of 3-node triangles in an MSH 4.1 ASCII file."""
+    return msh_counts(msh_path)[1].get(2, 0)
 
 
 def quality(geomesh, msh_path):
@@ -96,6 +119,67 @@ def quality(geomesh, msh_path):
     proc = subprocess.run([str(geomesh), str(msh_path), "-v", "4"], capture_output=True, text=True)
     m = re.search(r"quality \(gamma\) min ([0-9.eE+-]+), mean ([0-9.eE+-]+)", proc.stderr)
     return (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
+
+
+def check(geomesh, msh_path):
+    """(min gamma, mean gamma, problems) of a mesh file by geomesh's `-check`: its summary gives
+    the gamma of the highest-dimensional elements (the tetrahedra of a 3D mesh); problems is
+    "" when the check finds none, else its first error line and the line after it."""
+    proc = subprocess.run([str(geomesh), str(msh_path), "-check"], capture_output=True, text=True)
+    log = proc.stdout + proc.stderr
+    m = re.search(r"quality \(gamma\) min ([0-9.eE+-]+), mean ([0-9.eE+-]+)", log)
+    qmin, qmean = (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
+    problems = ""
+    if proc.returncode != 0:
+        lines = log.splitlines()
+        first = next((i for i, line in enumerate(lines) if "rror" in line), None)
+        problems = (" / ".join(lines[first:first + 2]) if first is not None
+                    else f"-check exited with {proc.returncode}")
+    return qmin, qmean, problems
+
+
+def run_volume(cmd, script_path, extra, out, work, geomesh, with_quality=True):
+    """Meshes a 3D case with one program (cmd, then the script, extra and the output) into
+    `out` (MSH 4.1 ASCII) and returns its figures: wall and 3D stage seconds, peak MiB,
+    tetrahedra, tets/s of the stage, nodes, and (with_quality) gamma min / mean and problems."""
+    full = cmd + [str(script_path)] + extra + ["-format", "msh41", "-o", str(out)]
+    wall, rss, log = measure(full, work)
+    stage = stage_seconds(log, "3D")
+    nodes, counts = msh_counts(out)
+    tets = counts.get(TETRAHEDRON, 0)
+    row = {"wall": wall, "stage": stage, "rss": rss, "tets": tets, "nodes": nodes,
+           "rate": tets / stage if tets and stage else 0.0,
+           "qmin": float("nan"), "qmean": float("nan"), "problems": ""}
+    if with_quality and tets:
+        row["qmin"], row["qmean"], row["problems"] = check(geomesh, out)
+    return row
+
+
+def print_volume_header():
+    print(f"{'case':24} {'program':10} {'wall s':>8} {'3D s':>8} {'peak MiB':>9} {'tets':>10} "
+          f"{'tets/s':>10} {'nodes':>9} {'min gamma':>9} {'mean gamma':>10}")
+
+
+def run_volume_case(name, script_path, extra, geomesh, reference, work):
+    """A 3D case: geomesh and the reference's runs of REFERENCE_3D, each on one thread."""
+    programs = [("geomesh", [str(geomesh)], [])]
+    programs += [(label, reference, algo) for label, algo in REFERENCE_3D]
+    rows = {}
+    for program, cmd, algo in programs:
+        out = work / f"{name}-{program}.msh"
+        row = run_volume(cmd, script_path, extra + algo + ["-nt", "1"], out, work, geomesh)
+        rows[program] = row
+        st_text = f"{row['stage']:8.3f}" if row["stage"] is not None else "       -"
+        print(f"{name:24} {program:10} {row['wall']:8.3f} {st_text} {row['rss']:9.1f} {row['tets']:10d} "
+              f"{row['rate']:10.0f} {row['nodes']:9d} {row['qmin']:9.4f} {row['qmean']:10.5f}")
+        if row["problems"]:
+            print(f"{'':24} {program:10} check: {row['problems']}")
+    g = rows["geomesh"]
+    for label, _ in REFERENCE_3D:
+        r = rows[label]
+        speed = r["stage"] / g["stage"] if g["stage"] and r["stage"] else float("nan")
+        print(f"{name:24} {label + '/gm':10} {r['wall'] / g['wall']:8.2f}x {speed:7.2f}x "
+              f"{r['rss'] / g['rss']:8.2f}x  (wall, 3D stage, memory: reference / geomesh)")
 
 
 def prepare(name, script, geomesh, work):
@@ -111,6 +195,11 @@ def prepare(name, script, geomesh, work):
     return work / script
 
 
+def print_header():
+    print(f"{'case':24} {'program':10} {'wall s':>8} {'stage s':>8} {'peak MiB':>9} {'triangles':>10} "
+          f"{'tri/s':>10} {'min gamma':>9} {'mean gamma':>10}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("cases", nargs="*", default=list(CASES))
@@ -120,16 +209,23 @@ def main():
     if not geomesh.exists():
         sys.exit(f"build geomesh first ({geomesh} is missing): bash scripts/setup.sh")
     python = ensure_reference()
-    reference = [str(python), "-c",
-                 "import sys, gmsh; gmsh.initialize(['gmsh'] + sys.argv[1:], run=True); gmsh.finalize()"]
+    reference = reference_command(python)
     work = ROOT / "build" / "bench"
     work.mkdir(parents=True, exist_ok=True)
-    print(f"{'case':24} {'program':10} {'wall s':>8} {'stage s':>8} {'peak MiB':>9} {'triangles':>10} "
-          f"{'tri/s':>10} {'min gamma':>9} {'mean gamma':>10}")
+    header = None
     speeds = {}
     for name in args.cases:
         script, extra, stage = CASES[name]
         script_path = prepare(name, script, geomesh, work)
+        if stage == "3D":
+            if header != "3D":
+                print_volume_header()
+            header = "3D"
+            run_volume_case(name, script_path, extra, geomesh, reference, work)
+            continue
+        if header != "2D":
+            print_header()
+        header = "2D"
         rows = {}
         for program, cmd in (("geomesh", [str(geomesh)]), ("reference", reference)):
             out = work / f"{name}-{program}.msh"

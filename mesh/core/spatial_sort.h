@@ -13,5 +13,6 @@ namespace geomesh {
 // curve: consecutive points are close, so walking point location stays short, while the
 // rounds keep incremental Delaunay insertion expected O(n log n). Deterministic.
 std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points);
+std::vector<std::uint32_t> spatialOrder(std::span<const Vec3> points);
 
 }  // namespace geomesh

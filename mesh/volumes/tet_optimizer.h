@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernel/model.h"
@@ -24,6 +26,14 @@ struct KeptInside {
   std::vector<NodeIndex> fixedNodes = {};  // nodes of the volume that stay where they are
 };
 
+// The volume mesher improves the tetrahedra below this gamma, or below Mesh.OptimizeThreshold
+// when that is higher: the reference's default threshold (0.3) leaves a mean gamma a little
+// under what this one reaches for a modest cost.
+inline constexpr double kOptimizeBelowAtLeast = 0.45;
+// Without optimization, tetrahedra under this gamma are still repaired: nearly flat ones are
+// not valid elements.
+inline constexpr double kFlatBelow = 1e-3;
+
 // Improves the tetrahedra of a volume whose quality (gamma) is below `threshold`, by edge
 // removal, 2-3 face swaps and smoothing of the volume's own nodes. Faces with a single
 // tetrahedron (the boundary), the faces and edges in `kept` (and the edges of those faces), and
@@ -32,5 +42,12 @@ struct KeptInside {
 // replaces. Deterministic: no node is added or renumbered.
 TetOptimizerStats optimizeTetrahedra(Mesh& mesh, EntityId volume, double threshold,
                                      const KeptInside& kept = {});
+
+// The same on a volume's own arrays: `tets` (4 indices into `points` each) are replaced, and
+// the points flagged movable may move; the kept faces and segments are in the same indices.
+TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char> movable,
+                                     std::vector<std::uint32_t>& tets, double threshold,
+                                     std::span<const std::array<std::uint32_t, 3>> keptFaces,
+                                     std::span<const std::array<std::uint32_t, 2>> keptSegments);
 
 }  // namespace geomesh

@@ -1,4 +1,4 @@
-// meshVolume: shells oriented, the complex checked for intersections exactly, then TetGen.
+// meshVolume: the complex checked, its tetrahedra recovered, refined to sizes and improved.
 #include "mesh/volumes/volume_mesher.h"
 
 #include <tetgen.h>
@@ -6,20 +6,25 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "mesh/structured/extrusion_mesher.h"
 #include "mesh/core/mesh_error.h"
+#include "mesh/core/predicates.h"
+#include "mesh/structured/extrusion_mesher.h"
 #include "mesh/volumes/abort_trap.h"
+#include "mesh/volumes/boundary_delaunay.h"
+#include "mesh/volumes/delaunay_tets.h"
 #include "mesh/volumes/embedded_conformity.h"
 #include "mesh/volumes/plc_containment.h"
 #include "mesh/volumes/plc_intersections.h"
 #include "mesh/volumes/pyramid_bases.h"
 #include "mesh/volumes/tet_optimizer.h"
+#include "mesh/volumes/tet_refinement.h"
+#include "mesh/volumes/tet_smoothing.h"
 #include "mesh/volumes/volume_plc.h"
 
 namespace geomesh {
@@ -112,7 +117,7 @@ Vec3 pointInsideShell(const std::vector<PlcTriangle>& tris, std::size_t first, s
 // first.
 class TetgenInput {
  public:
-  TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz, std::vector<double> sizes,
+  TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz,
               const std::vector<Vec3>& holes);
   ~TetgenInput() { release(); }
   TetgenInput(const TetgenInput&) = delete;
@@ -122,7 +127,7 @@ class TetgenInput {
  private:
   void release();
 
-  std::vector<double> points_, sizes_, holes_;
+  std::vector<double> points_, holes_;
   std::vector<int> corners_, edges_;
   std::vector<tetgenio::polygon> polygons_;
   std::vector<tetgenio::facet> facets_;
@@ -130,8 +135,7 @@ class TetgenInput {
 };
 
 TetgenInput::TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz,
-                         std::vector<double> sizes, const std::vector<Vec3>& holes)
-    : sizes_(std::move(sizes)) {
+                         const std::vector<Vec3>& holes) {
   for (Vec3 p : xyz) points_.insert(points_.end(), {p.x, p.y, p.z});
   for (Vec3 h : holes) holes_.insert(holes_.end(), {h.x, h.y, h.z});
   for (const PlcTriangle& t : plc.triangles) corners_.insert(corners_.end(), t.begin(), t.end());
@@ -145,8 +149,6 @@ TetgenInput::TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz,
   io_.firstnumber = 0;
   io_.numberofpoints = static_cast<int>(xyz.size());
   io_.pointlist = points_.data();
-  io_.numberofpointmtrs = 1;
-  io_.pointmtrlist = sizes_.data();
   io_.numberoffacets = static_cast<int>(facets_.size());
   io_.facetlist = facets_.data();
   io_.numberofholes = static_cast<int>(holes.size());
@@ -157,7 +159,6 @@ TetgenInput::TetgenInput(const VolumePlc& plc, const std::vector<Vec3>& xyz,
 
 void TetgenInput::release() {
   io_.pointlist = nullptr;
-  io_.pointmtrlist = nullptr;
   io_.facetlist = nullptr;
   io_.numberoffacets = 0;
   io_.holelist = nullptr;
@@ -179,111 +180,119 @@ std::string tetgenFailure(int code) {
 // Whether TetGen ran to its end; false when it aborted on a failed assertion, which TetGen 1.5
 // does on some exactly degenerate inputs (many cospherical and coplanar nodes, as a prism whose
 // top is the translated copy of its bottom), depending on the order of the points.
-bool tetrahedralizeBoundary(const ModelVolume& volume, TetgenInput& input, tetgenio& output,
-                            tetgenio* background) {
-  // p: boundary given as facets; Y: no node added on it; q2.0: radius-edge ratio bound (a
-  // tighter one or a dihedral angle bound adds 5-20% tetrahedra, and the slivers left near the
-  // boundary are the optimizer's work either way); m: sizes at the points; z: zero-based
-  // numbering; Q: quiet.
-  char switches[] = "pYq2.0mzQ";
+bool recoverBoundary(const ModelVolume& volume, TetgenInput& input, tetgenio& output) {
+  // p: boundary given as facets, recovered in the tetrahedralization of its nodes; Y: no node
+  // added on it; z: zero-based numbering; Q: quiet. The interior is refined afterwards
+  // (refineToSizes).
+  char switches[] = "pYzQ";
   try {
-    return runTrappingAbort(
-        [&] { tetrahedralize(switches, &input.io(), &output, nullptr, background); });
+    return runTrappingAbort([&] { tetrahedralize(switches, &input.io(), &output); });
   } catch (int code) {
     throw MeshError({3, volume.tag}, tetgenFailure(code));
   }
 }
 
-// A background mesh for TetGen: the nodes and tetrahedra of a mesh it made, borrowed, with a
-// size at each node.
-class TetgenBackground {
- public:
-  TetgenBackground(tetgenio& mesh, std::vector<double> sizes) : sizes_(std::move(sizes)) {
-    io_.firstnumber = 0;
-    io_.numberofpoints = mesh.numberofpoints;
-    io_.pointlist = mesh.pointlist;
-    io_.numberoftetrahedra = mesh.numberoftetrahedra;
-    io_.numberofcorners = mesh.numberofcorners;
-    io_.tetrahedronlist = mesh.tetrahedronlist;
-    io_.numberofpointmtrs = 1;
-    io_.pointmtrlist = sizes_.data();
+// The recovered tetrahedra as the kernel's arrays, positively oriented, with the triangles of
+// the embedded surfaces kept and the segments of the embedded curves too; the sizes at TetGen's
+// own interior points (rare, where recovery needed them) from the boundary nodes around them.
+DelaunayTets kernelMesh(const VolumePlc& plc, const tetgenio& out, std::vector<double>& sizes) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < out.numberofpoints; ++i)
+    points.push_back({out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]});
+  std::vector<std::uint32_t> tets(out.tetrahedronlist,
+                                  out.tetrahedronlist + 4 * std::size_t(out.numberoftetrahedra));
+  for (std::size_t t = 0; t < tets.size(); t += 4)
+    if (orient3d(points[tets[t]], points[tets[t + 1]], points[tets[t + 2]],
+                     points[tets[t + 3]]) < 0)
+      std::swap(tets[t], tets[t + 1]);
+  const std::size_t known = plc.nodes.size();
+  std::vector<double> sum(points.size(), 0), count(points.size(), 0);
+  for (std::size_t t = 0; t < tets.size(); t += 4)
+    for (int i = 0; i < 4; ++i)
+      if (tets[t + i] >= known)
+        for (int j = 0; j < 4; ++j)
+          if (tets[t + j] < known) {
+            sum[tets[t + i]] += sizes[tets[t + j]];
+            ++count[tets[t + i]];
+          }
+  double largest = 0;
+  for (double h : sizes) largest = std::max(largest, h);
+  for (std::size_t i = known; i < points.size(); ++i)
+    sizes.push_back(count[i] > 0 ? sum[i] / count[i] : largest);
+  std::vector<std::array<std::uint32_t, 3>> kept;
+  for (std::size_t t = plc.shellEnd; t < plc.triangles.size(); ++t) {
+    const PlcTriangle& c = plc.triangles[t];
+    kept.push_back({std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])});
   }
-  ~TetgenBackground() {
-    io_.pointlist = nullptr;
-    io_.tetrahedronlist = nullptr;
-    io_.pointmtrlist = nullptr;
-  }
-  TetgenBackground(const TetgenBackground&) = delete;
-  TetgenBackground& operator=(const TetgenBackground&) = delete;
-  tetgenio& io() { return io_; }
-
- private:
-  std::vector<double> sizes_;
-  tetgenio io_;
-};
-
-// Remakes the mesh sized by the interior size at the nodes of the previous one (each node's
-// boundary size, or the size TetGen interpolated there, bounding it when sizes extend from the
-// boundary), until the node count settles (at most a few times).
-std::unique_ptr<tetgenio> followInteriorSize(const ModelVolume& volume, TetgenInput& input,
-                                             const std::vector<double>& plcSizes,
-                                             const InteriorSize& interiorSize,
-                                             const MeshOptions& options,
-                                             std::unique_ptr<tetgenio> mesh) {
-  constexpr int kPasses = 4;
-  constexpr double kSettled = 0.03;  // relative change of the node count
-  const double factor = options.sizeFactor > 0 ? options.sizeFactor : 1;
-  for (int pass = 0; pass < kPasses; ++pass) {
-    const int before = mesh->numberofpoints;
-    std::vector<double> sizes(static_cast<std::size_t>(before));
-    // All sizes as TetGen reads them (see kTetgenSizeScale), as plcSizes are.
-    for (int i = 0; i < before; ++i) {
-      const double* p = mesh->pointlist + 3 * i;
-      sizes[i] = kTetgenSizeScale * std::clamp(interiorSize({p[0], p[1], p[2]}) * factor,
-                                               options.sizeMin, options.sizeMax);
-      if (i < static_cast<int>(plcSizes.size()))
-        sizes[i] = std::min(sizes[i], plcSizes[i]);
-      else if (options.sizeExtendFromBoundary && mesh->pointmtrlist)
-        sizes[i] = std::min(sizes[i], mesh->pointmtrlist[i]);
-    }
-    TetgenBackground background(*mesh, std::move(sizes));
-    auto next = std::make_unique<tetgenio>();
-    // A pass that aborts (see tetrahedralizeBoundary) leaves the previous mesh.
-    if (!tetrahedralizeBoundary(volume, input, *next, &background.io())) break;
-    const int after = next->numberofpoints;
-    mesh = std::move(next);
-    if (std::abs(after - before) <= kSettled * before) break;
-  }
+  DelaunayTets mesh = DelaunayTets::fromTetrahedra(std::move(points), std::move(tets), kept);
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  for (const PlcSegment& s : plc.segments)
+    segments.push_back({std::uint32_t(s[0]), std::uint32_t(s[1])});
+  if (!segments.empty()) mesh.keepEdges(segments);
   return mesh;
 }
 
-// Adds TetGen's new points to the volume and its tetrahedra, positively oriented.
-void appendTetrahedra(const ModelVolume& volume, const VolumePlc& plc, const tetgenio& out,
+// The tetrahedra of the complex's nodes with its triangles and segments as faces and edges:
+// the kernel's own Delaunay tetrahedralization when it holds them all, else TetGen's recovery
+// (tried in up to three orders of the nodes). `sizes` receives the size at each vertex.
+DelaunayTets recoverTetrahedra(const ModelVolume& volume, VolumePlc& plc, std::vector<Vec3>& xyz,
+                               const std::vector<Vec3>& holes, std::vector<double>& plcSizes,
+                               std::vector<double>& sizes) {
+  if (std::optional<DelaunayTets> tets = boundaryDelaunay(plc, xyz, holes)) {
+    sizes = plcSizes;
+    return std::move(*tets);
+  }
+  constexpr int kOrders = 3;
+  for (int attempt = 0; attempt < kOrders; ++attempt) {
+    if (attempt > 0) renumberPlc(plc, xyz, plcSizes, plc.nodes.size() / (attempt + 1) + 1);
+    TetgenInput input(plc, xyz, holes);
+    tetgenio output;
+    if (recoverBoundary(volume, input, output)) {
+      sizes = plcSizes;
+      return kernelMesh(plc, output, sizes);
+    }
+  }
+  throw MeshError({3, volume.tag}, "TetGen failed an internal check on its boundary mesh in " +
+                                       std::to_string(kOrders) +
+                                       " orders of its nodes (a degenerate configuration)");
+}
+
+// Improves the tetrahedra (4 indices into `points` each), moving only the points numbered
+// firstInterior or more, keeping the complex's triangles and segments. Without Mesh.Optimize
+// only nearly flat ones are repaired (they would not pass the mesh check); with it, every one
+// below the threshold is improved.
+void optimizeTetrahedra(const VolumePlc& plc, const MeshOptions& options,
+                        std::uint32_t firstInterior, std::vector<Vec3>& points,
+                        std::vector<std::uint32_t>& tets) {
+  std::vector<char> movable(points.size(), 0);
+  std::fill(movable.begin() + firstInterior, movable.end(), 1);
+  std::vector<std::array<std::uint32_t, 3>> keptFaces;
+  for (const PlcTriangle& t : plc.triangles)
+    keptFaces.push_back({std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
+  std::vector<std::array<std::uint32_t, 2>> keptSegments;
+  for (const PlcSegment& s : plc.segments)
+    keptSegments.push_back({std::uint32_t(s[0]), std::uint32_t(s[1])});
+  const double threshold =
+      options.optimize ? std::max(options.optimizeThreshold, kOptimizeBelowAtLeast) : kFlatBelow;
+  optimizeTetrahedra(points, std::move(movable), tets, threshold, keptFaces, keptSegments);
+}
+
+// Adds the volume's new points (those after the complex's nodes) to the mesh, and its
+// tetrahedra (4 indices into `points` each).
+void appendTetrahedra(const ModelVolume& volume, const VolumePlc& plc,
+                      const std::vector<Vec3>& points, const std::vector<std::uint32_t>& tets,
                       Mesh& mesh) {
   const EntityId id{3, volume.tag};
-  if (out.numberofpoints < static_cast<int>(plc.nodes.size()) || out.numberofcorners != 4 ||
-      out.numberoftetrahedra <= 0)
-    throw MeshError(id, "TetGen returned no tetrahedra");
-  for (std::size_t i = 0; i < plc.nodes.size(); ++i) {
-    const double* p = out.pointlist + 3 * i;
-    if (!(Vec3{p[0], p[1], p[2]} == mesh.node(plc.nodes[i])))
-      throw MeshError(id, "TetGen moved a boundary node");
-  }
+  if (tets.empty()) throw MeshError(id, "the volume mesher made no tetrahedra");
   EntityMesh& em = mesh.entity(id);
   std::vector<NodeIndex> global(plc.nodes);
-  for (int i = static_cast<int>(plc.nodes.size()); i < out.numberofpoints; ++i) {
-    const double* p = out.pointlist + 3 * i;
-    global.push_back(mesh.addNode({p[0], p[1], p[2]}));
+  for (std::size_t i = plc.nodes.size(); i < points.size(); ++i) {
+    global.push_back(mesh.addNode(points[i]));
     em.nodes.push_back(global.back());
   }
-  ElementBlock& tets = em.block(ElementType::Tet4);
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
-    const int* c = out.tetrahedronlist + 4 * t;
-    std::array<NodeIndex, 4> n{global[c[0]], global[c[1]], global[c[2]], global[c[3]]};
-    if (signedTetVolume(mesh.node(n[0]), mesh.node(n[1]), mesh.node(n[2]), mesh.node(n[3])) < 0)
-      std::swap(n[0], n[1]);
-    tets.nodes.insert(tets.nodes.end(), n.begin(), n.end());
-  }
+  ElementBlock& block = em.block(ElementType::Tet4);
+  block.nodes.reserve(block.nodes.size() + tets.size());
+  for (std::uint32_t v : tets) block.nodes.push_back(global[v]);
 }
 
 // With -Y, TetGen adds no node on the embedded entities; should it still leave one of their
@@ -337,18 +346,6 @@ std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
   return {};
 }
 
-// The embedded surfaces' triangles and curves' segments, in mesh nodes.
-KeptInside keptInside(const VolumePlc& plc) {
-  KeptInside kept;
-  for (std::size_t t = plc.shellEnd; t < plc.triangles.size(); ++t) {
-    const PlcTriangle& c = plc.triangles[t];
-    kept.triangles.push_back({plc.nodes[c[0]], plc.nodes[c[1]], plc.nodes[c[2]]});
-  }
-  for (const PlcSegment& s : plc.segments)
-    kept.segments.push_back({plc.nodes[s[0]], plc.nodes[s[1]]});
-  return kept;
-}
-
 }  // namespace
 
 void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
@@ -371,34 +368,27 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
     holes.push_back(pointInsideShell(plc.triangles, first, last, xyz));
   }
   std::vector<double> plcSizes = plcNodeSizes(plc, xyz, options);
-  constexpr int kOrders = 3;
-  for (int attempt = 0;; ++attempt) {
-    if (attempt > 0) renumberPlc(plc, xyz, plcSizes, plc.nodes.size() / (attempt + 1) + 1);
-    TetgenInput input(plc, xyz, plcSizes, holes);
-    auto output = std::make_unique<tetgenio>();
-    if (tetrahedralizeBoundary(*volume, input, *output, nullptr)) {
-      if (interiorSize)
-        output =
-            followInteriorSize(*volume, input, plcSizes, interiorSize, options, std::move(output));
-      appendTetrahedra(*volume, plc, *output, mesh);
-      if (!pyramids.empty()) {
-        ElementBlock& block = mesh.entity({3, volumeTag}).block(ElementType::Pyramid5);
-        for (const Pyramid& p : pyramids)
-          for (int k : p) block.nodes.push_back(plc.nodes[k]);
-      }
-      break;
-    }
-    if (attempt + 1 == kOrders)
-      throw MeshError({3, volumeTag}, "TetGen failed an internal check on its boundary mesh in " +
-                                          std::to_string(kOrders) +
-                                          " orders of its nodes (a degenerate configuration)");
+  RefinementSizes sizes;
+  DelaunayTets tets = recoverTetrahedra(*volume, plc, xyz, holes, plcSizes, sizes.atVertex);
+  if (interiorSize) {
+    const double factor = options.sizeFactor > 0 ? options.sizeFactor : 1;
+    sizes.field = [&interiorSize, factor, &options](Vec3 p) {
+      return std::clamp(interiorSize(p) * factor, options.sizeMin, options.sizeMax);
+    };
+    sizes.extendFromBoundary = options.sizeExtendFromBoundary;
+  }
+  refineToSizes(tets, sizes);
+  const auto firstInterior = static_cast<std::uint32_t>(plc.nodes.size());
+  if (options.optimize) smoothVertices(tets, firstInterior, kSmoothingPasses);
+  std::vector<std::uint32_t> live = tets.liveTetrahedra();
+  optimizeTetrahedra(plc, options, firstInterior, tets.points, live);
+  appendTetrahedra(*volume, plc, tets.points, live, mesh);
+  if (!pyramids.empty()) {
+    ElementBlock& block = mesh.entity({3, volumeTag}).block(ElementType::Pyramid5);
+    for (const Pyramid& p : pyramids)
+      for (int k : p) block.nodes.push_back(plc.nodes[k]);
   }
   requireEmbeddedConformity(*volume, mesh);
-  if (options.optimize) {
-    KeptInside kept = keptInside(plc);
-    for (const Pyramid& p : pyramids) kept.fixedNodes.push_back(plc.nodes[p[4]]);  // apexes
-    optimizeTetrahedra(mesh, {3, volumeTag}, options.optimizeThreshold, kept);
-  }
 }
 
 }  // namespace geomesh

@@ -200,7 +200,7 @@ std::vector<double> plcNodeSizes(const VolumePlc& plc, const std::vector<Vec3>& 
   std::vector<int> onTriangles;
   for (std::size_t i = 0; i < size.size(); ++i)
     if (count[i] > 0) {
-      size[i] = kTetgenSizeScale * std::clamp(sum[i] / count[i], options.sizeMin, options.sizeMax);
+      size[i] = std::clamp(sum[i] / count[i], options.sizeMin, options.sizeMax);
       onTriangles.push_back(static_cast<int>(i));
     }
   // The reference does not refine the tetrahedra around embedded curves and points, whatever

@@ -47,16 +47,10 @@ struct VolumePlc {
 // (shells), 3-node triangles (embedded surfaces) or 2-node lines (curves).
 VolumePlc collectVolumePlc(const Model& model, const ModelVolume& volume, const Mesh& mesh);
 
-// TetGen adds nodes until no edge is much longer than the size asked for; a Delaunay mesh
-// whose nodes lie a size apart, as the reference makes, has longer edges on average. The
-// sizes given to TetGen are scaled by this factor, which brings the node counts to the
-// reference's (within 10% on boxes, spheres, lofts, CAD parts and size fields).
-inline constexpr double kTetgenSizeScale = 1.15;
-
-// Target size at each node of the complex (as TetGen reads it: see kTetgenSizeScale), within
-// the allowed range: at a node of the shells or of an embedded surface, the mean length of its
-// triangle edges; at another node (of an embedded curve or point), the size at the nearest
-// node of a surface, as the reference leaves the tetrahedra around those unrefined.
+// Target size at each node of the complex, within the allowed range: at a node of the shells
+// or of an embedded surface, the mean length of its triangle edges; at another node (of an
+// embedded curve or point), the size at the nearest node of a surface, as the reference leaves
+// the tetrahedra around those unrefined.
 std::vector<double> plcNodeSizes(const VolumePlc& plc, const std::vector<Vec3>& xyz,
                                  const MeshOptions& options);
 

@@ -180,7 +180,8 @@ void expectValid(const Case& c, const Mesh& mesh) {
   EXPECT_NEAR(volume, c.volume, 1e-12);
 }
 
-void expectOptimized(Case (*make)(), double minGamma) {
+// rawBelow: the worst gamma without optimization is below it (something to improve).
+void expectOptimized(Case (*make)(), double minGamma, double rawBelow) {
   Case raw = make(), optimized = make();
   meshVolume(raw.model, withOptimize(false), 1, nullptr, raw.mesh);
   meshVolume(optimized.model, withOptimize(true), 1, nullptr, optimized.mesh);
@@ -188,7 +189,7 @@ void expectOptimized(Case (*make)(), double minGamma) {
   expectValid(optimized, optimized.mesh);
   const QualityStats before = meshQuality(raw.mesh, 3, QualityMeasure::Gamma);
   const QualityStats after = meshQuality(optimized.mesh, 3, QualityMeasure::Gamma);
-  EXPECT_LT(before.min, 0.3);  // something to improve
+  EXPECT_LT(before.min, rawBelow);
   EXPECT_GT(after.min, minGamma);
   EXPECT_GE(after.mean, before.mean);
   // Optimization moves only the volume's own nodes.
@@ -196,17 +197,19 @@ void expectOptimized(Case (*make)(), double minGamma) {
     if (id.dim == 3) continue;
     for (NodeIndex n : em.nodes) EXPECT_TRUE(raw.mesh.node(n) == optimized.mesh.node(n));
   }
-  // Without the option the mesh is TetGen's: optimizing it afterwards gives the same result.
-  optimizeTetrahedra(raw.mesh, {3, 1}, 0.3);
-  EXPECT_EQ(tetNodes(raw.mesh), tetNodes(optimized.mesh));
-  EXPECT_TRUE(std::equal(raw.mesh.coordinates().begin(), raw.mesh.coordinates().end(),
-                         optimized.mesh.coordinates().begin(),
-                         optimized.mesh.coordinates().end()));
+  // Without the option the mesh is left as refined; optimizing it afterwards, on the mesh,
+  // reaches the same bound (the volume mesher optimizes its own arrays, numbered otherwise,
+  // so the two results need not be identical).
+  optimizeTetrahedra(raw.mesh, {3, 1}, kOptimizeBelowAtLeast);
+  expectValid(raw, raw.mesh);
+  EXPECT_GT(meshQuality(raw.mesh, 3, QualityMeasure::Gamma).min, minGamma);
 }
 
-TEST(TetOptimizer, UnitCube) { expectOptimized(unitCube, 0.25); }
+// On the cube the refinement alone leaves no sliver (worst gamma about 0.49); optimization
+// raises the worst tetrahedra further.
+TEST(TetOptimizer, UnitCube) { expectOptimized(unitCube, 0.45, 0.55); }
 
-TEST(TetOptimizer, CubeWithSphericalHole) { expectOptimized(cubeWithSphericalHole, 0.25); }
+TEST(TetOptimizer, CubeWithSphericalHole) { expectOptimized(cubeWithSphericalHole, 0.25, 0.3); }
 
 TEST(TetOptimizer, Deterministic) {
   Case first = cubeWithSphericalHole(), second = cubeWithSphericalHole();

@@ -1,5 +1,5 @@
-// A box with a spherical cavity, finer on the sphere: the graded sizes give TetGen slivers
-// which the optimizer removes. The sphere is eight octants, each a three-sided filling
+// A box with a spherical cavity, finer on the sphere: the graded sizes leave slivers next to
+// the sphere, which the mesher replaces or the optimizer removes. The sphere is eight octants, each a three-sided filling
 // surface bounded by quarter circles.
 lc = 0.25;
 lcs = 0.08;

@@ -1,4 +1,4 @@
-// The same cube with Mesh.Optimize = 0: TetGen's mesh as it is, with slivers left.
+// The same cube with Mesh.Optimize = 0: the refined mesh as it is, with slivers left.
 Mesh.Optimize = 0;
 Point(1) = {0, 0, 0, 0.3};
 Point(2) = {1, 0, 0, 0.3};

@@ -1,0 +1,13 @@
+// Unit cube [0,1]^3 at uniform size lc (default 0.02: about 0.5M tetrahedra), extruded from a square.
+DefineConstant[ lc = 0.02 ];
+Point(1) = {0, 0, 0, lc};
+Point(2) = {1, 0, 0, lc};
+Point(3) = {1, 1, 0, lc};
+Point(4) = {0, 1, 0, lc};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Extrude {0, 0, 1} { Surface{1}; }

@@ -1,0 +1,68 @@
+// smoothVertices: Laplacian moves accepted when the worst mean ratio around the vertex rises.
+#include "mesh/volumes/tet_smoothing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mesh/core/predicates.h"
+#include "mesh/core/quality.h"
+
+namespace geomesh {
+
+std::size_t smoothVertices(DelaunayTets& mesh, std::uint32_t firstMovable, int passes) {
+  const std::size_t count = mesh.points.size();
+  if (firstMovable >= count) return 0;
+  // Tetrahedra around each vertex, compressed rows.
+  std::vector<std::uint32_t> start(count + 1, 0), around;
+  for (std::uint32_t t = 0; t < mesh.slotCount(); ++t)
+    if (mesh.alive(t))
+      for (int k = 0; k < 4; ++k) ++start[mesh.vertices[4 * std::size_t{t} + k] + 1];
+  for (std::size_t i = 0; i < count; ++i) start[i + 1] += start[i];
+  around.resize(start[count]);
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::uint32_t t = 0; t < mesh.slotCount(); ++t)
+    if (mesh.alive(t))
+      for (int k = 0; k < 4; ++k) around[fill[mesh.vertices[4 * std::size_t{t} + k]]++] = t;
+
+  std::size_t moves = 0;
+  for (int pass = 0; pass < passes; ++pass) {
+    for (std::uint32_t v = firstMovable; v < count; ++v) {
+      const std::uint32_t first = start[v], last = start[v + 1];
+      if (first == last) continue;
+      // The mean of the other vertices of its tetrahedra (each counted once per tetrahedron:
+      // a weighting by how many tetrahedra share a neighbour, which favours the nearer ones).
+      Vec3 sum{0, 0, 0};
+      double worst = 1;
+      for (std::uint32_t i = first; i < last; ++i) {
+        const std::uint32_t* t = &mesh.vertices[4 * std::size_t{around[i]}];
+        for (int k = 0; k < 4; ++k)
+          if (t[k] != v) sum = sum + mesh.points[t[k]];
+        worst = std::min(worst, tetMeanRatioCubed(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]],
+                                      mesh.points[t[3]]));
+      }
+      const Vec3 old = mesh.points[v];
+      const Vec3 target = sum / (3.0 * (last - first));
+      mesh.points[v] = target;
+      double better = 1;
+      for (std::uint32_t i = first; i < last && better > worst; ++i) {
+        const std::uint32_t* t = &mesh.vertices[4 * std::size_t{around[i]}];
+        better = std::min(better, tetMeanRatioCubed(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]],
+                                        mesh.points[t[3]]));
+      }
+      bool accept = better > worst;
+      for (std::uint32_t i = first; i < last && accept; ++i) {
+        const std::uint32_t* t = &mesh.vertices[4 * std::size_t{around[i]}];
+        accept = orient3d(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]],
+                              mesh.points[t[3]]) > 0;
+      }
+      if (accept)
+        ++moves;
+      else
+        mesh.points[v] = old;
+    }
+  }
+  return moves;
+}
+
+}  // namespace geomesh
