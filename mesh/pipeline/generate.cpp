@@ -14,6 +14,7 @@
 #include "mesh/structured/meshing_order.h"
 #include "mesh/sizes/size_field.h"
 #include "mesh/checks/mesh_check.h"
+#include "mesh/checks/touching_volumes.h"
 #include "mesh/structured/periodic.h"
 #include "mesh/structured/transfinite_volume.h"
 #include "mesh/quads/recombine.h"
@@ -256,6 +257,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   if (dim >= 3) {
     const StageTimer timer(3);
     const ExtrusionMesher extruded(model);
+    for (const std::string& touching : touchingVolumes(model, mesh)) log.warning(touching);
     const VolumeAlgorithm& volume = volumeAlgorithmFor(options.algorithm3D);
     const std::string why = volumeAlgorithmUnavailable(options.algorithm3D);
     bool warned = why.empty();

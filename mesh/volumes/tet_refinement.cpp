@@ -153,6 +153,10 @@ RefinementStats refineToSizes(DelaunayTets& mesh, RefinementSizes& sizes) {
   RefinementStats stats;
   // A tetrahedron whose height is under 1e-3 of its longest edge is not made at all.
   mesh.refuseFlat(1e-3);
+  // The field's sizes hold at the existing vertices too, where the boundary's may be smaller.
+  if (sizes.field)
+    for (std::size_t i = 0; i < sizes.atVertex.size(); ++i)
+      sizes.atVertex[i] = std::min(sizes.atVertex[i], sizes.field(mesh.points[i]));
   std::vector<std::uint32_t> active;
   for (std::uint32_t t = 0; t < mesh.slotCount(); ++t)
     if (mesh.alive(t)) active.push_back(t);

@@ -11,8 +11,8 @@ namespace geomesh {
 
 // Where the sizes inside the volume come from.
 struct RefinementSizes {
-  // Size at each vertex present before refinement (its boundary size); refinement appends
-  // one per vertex it inserts.
+  // Size at each vertex present before refinement (its boundary size, bounded by the field's
+  // when there is one); refinement appends one per vertex it inserts.
   std::vector<double> atVertex;
   // The size field inside the volume (factor and bounds applied), or empty.
   std::function<double(Vec3)> field;

@@ -25,6 +25,7 @@
 #include "mesh/volumes/tet_optimizer.h"
 #include "mesh/volumes/tet_refinement.h"
 #include "mesh/volumes/tet_smoothing.h"
+#include "mesh/volumes/volume_estimate.h"
 #include "mesh/volumes/volume_plc.h"
 
 namespace geomesh {
@@ -356,6 +357,12 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
   VolumePlc plc = collectVolumePlc(model, *volume, mesh);
   std::vector<Vec3> xyz;
   for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
+  // Refused before any costly work when it would not fit (the estimate needs the shells'
+  // sizes, and ignores the pyramids to come).
+  if (const std::string why =
+          tooManyTetrahedra(estimateTetrahedra(plc, xyz, plcNodeSizes(plc, xyz, options)));
+      !why.empty())
+    throw MeshError({3, volumeTag}, why + " (sizes too small for the volume?)");
   const std::vector<Pyramid> pyramids = standPyramids(*volume, plc, xyz, mesh);
   rejectEmbeddedOutside(*volume, plc, xyz);
   std::vector<Vec3> holes;
