@@ -2,6 +2,11 @@
 #include "mesh/pipeline/generate.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
 #include <chrono>
 #include <cstdlib>
 #include <optional>
@@ -24,6 +29,7 @@
 #include "mesh/surfaces/surface_mesher.h"
 #include "mesh/structured/transfinite_surface.h"
 #include "mesh/volumes/volume_algorithms.h"
+#include "mesh/volumes/volume_mesher.h"
 
 namespace geomesh {
 namespace {
@@ -227,6 +233,48 @@ bool hasOnlyTetrahedra(const Mesh& mesh) {
 
 }  // namespace
 
+namespace {
+
+// Meshes the volumes with tetrahedra: each one planned on one of up to General.NumThreads
+// threads, then added to the mesh in the order of their tags, so that the mesh is the same,
+// byte for byte, for any number of threads. The size fields are evaluated under a lock (they
+// are not made to be read by several threads at once). The first volume in that order that
+// fails stops the meshing there, as it would on one thread.
+void meshTetrahedralVolumes(const Model& model, const MeshOptions& options,
+                            const std::vector<int>& tags, const SizeFields& fields, Mesh& mesh) {
+  const std::size_t threads =
+      std::clamp<std::size_t>(options.numThreads > 0 ? options.numThreads : 1, 1, tags.size());
+  std::vector<VolumeMeshing> planned(tags.size());
+  std::vector<std::exception_ptr> failed(tags.size());
+  std::mutex fieldLock;
+  std::atomic<std::size_t> next{0};
+  auto plan = [&] {
+    for (std::size_t i = next++; i < tags.size(); i = next++) {
+      try {
+        InteriorSize interiorSize;
+        if (fields.hasBackground())
+          interiorSize = [&fields, &fieldLock, where = EntityId{3, tags[i]}](Vec3 p) {
+            const std::lock_guard<std::mutex> lock(fieldLock);
+            return fields.at(p, where);
+          };
+        planned[i] = planVolumeMesh(model, options, tags[i], interiorSize, mesh);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(plan);
+  plan();
+  for (std::thread& t : pool) t.join();
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    if (failed[i]) std::rethrow_exception(failed[i]);
+    commitVolumeMesh(model, std::move(planned[i]), mesh);
+  }
+}
+
+}  // namespace
+
 void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
                   MessageSink& log) {
   mesh.clear();
@@ -261,6 +309,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
     const VolumeAlgorithm& volume = volumeAlgorithmFor(options.algorithm3D);
     const std::string why = volumeAlgorithmUnavailable(options.algorithm3D);
     bool warned = why.empty();
+    std::vector<int> tetrahedral;
     for (const auto& entry : model.volumes()) {
       if (extruded.meshesVolume(entry.first)) continue;
       const auto& transfinite = model.meshConstraints().transfiniteVolumes;
@@ -274,11 +323,17 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
         log.warning("Mesh.Algorithm3D " + why + ": volumes are meshed with " + volume.title +
                     " (" + std::to_string(volume.code) + ")");
       warned = true;
-      const EntityId where{3, entry.first};
-      InteriorSize interiorSize;
-      if (fields.hasBackground())
-        interiorSize = [&fields, where](Vec3 p) { return fields.at(p, where); };
-      volume.mesh(model, options, entry.first, interiorSize, mesh);
+      tetrahedral.push_back(entry.first);
+    }
+    if (volume.mesh == &meshVolume) {
+      meshTetrahedralVolumes(model, options, tetrahedral, fields, mesh);
+    } else {  // another algorithm: one volume after the other
+      for (int tag : tetrahedral) {
+        InteriorSize interiorSize;
+        if (fields.hasBackground())
+          interiorSize = [&fields, where = EntityId{3, tag}](Vec3 p) { return fields.at(p, where); };
+        volume.mesh(model, options, tag, interiorSize, mesh);
+      }
     }
     extruded.meshVolumes(mesh);
     const MeshCheckReport report = checkVolumeElements(model, mesh);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -186,6 +187,10 @@ bool recoverBoundary(const ModelVolume& volume, TetgenInput& input, tetgenio& ou
   // added on it; z: zero-based numbering; Q: quiet. The interior is refined afterwards
   // (refineToSizes).
   char switches[] = "pYzQ";
+  // TetGen and the abort trap around it (a signal handler, stderr redirected) are not made for
+  // several threads: one volume at a time.
+  static std::mutex oneAtATime;
+  const std::lock_guard<std::mutex> lock(oneAtATime);
   try {
     return runTrappingAbort([&] { tetrahedralize(switches, &input.io(), &output); });
   } catch (int code) {
@@ -314,10 +319,10 @@ void requireEmbeddedConformity(const ModelVolume& volume, const Mesh& mesh) {
 // Pyramids on the quadrangles of the shells (see addPyramids), as high as their neighbours
 // allow: at a right-angled edge between two recombined faces, two pyramids of the full height
 // would meet, so lower ones are tried before the boundary is declared crossing itself. Their
-// apexes become nodes of the volume. The complex that comes out is checked for crossings
-// (rejectIntersections), with or without pyramids.
+// apexes are nodes of the complex not yet in the mesh (kNoNode). The complex that comes out is
+// checked for crossings (rejectIntersections), with or without pyramids.
 std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
-                                   std::vector<Vec3>& xyz, Mesh& mesh) {
+                                   std::vector<Vec3>& xyz) {
   if (plc.quads.empty()) {
     rejectIntersections(volume, plc, xyz);
     return {};
@@ -334,12 +339,6 @@ std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
       if (height == kHeights[std::size(kHeights) - 1]) throw;
       continue;
     }
-    EntityMesh& em = mesh.entity({3, volume.tag});
-    for (std::size_t i = 0; i < trial.nodes.size(); ++i)
-      if (trial.nodes[i] == kNoNode) {
-        trial.nodes[i] = mesh.addNode(places[i]);
-        em.nodes.push_back(trial.nodes[i]);
-      }
     plc = std::move(trial);
     xyz = std::move(places);
     return pyramids;
@@ -349,12 +348,15 @@ std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
 
 }  // namespace
 
-void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
-                const InteriorSize& interiorSize, Mesh& mesh) {
+VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int volumeTag,
+                             const InteriorSize& interiorSize, const Mesh& mesh) {
   const ModelVolume* volume = model.volume(volumeTag);
   if (!volume) throw MeshError({3, volumeTag}, "the volume does not exist");
-  if (isLayeredExtrusion(*volume)) return;  // structured: meshed by ExtrusionMesher
-  VolumePlc plc = collectVolumePlc(model, *volume, mesh);
+  VolumeMeshing result;
+  result.volume = volumeTag;
+  if (isLayeredExtrusion(*volume)) return result;  // structured: meshed by ExtrusionMesher
+  VolumePlc& plc = result.plc;
+  plc = collectVolumePlc(model, *volume, mesh);
   std::vector<Vec3> xyz;
   for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
   // Refused before any costly work when it would not fit (the estimate needs the shells'
@@ -363,7 +365,7 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
           tooManyTetrahedra(estimateTetrahedra(plc, xyz, plcNodeSizes(plc, xyz, options)));
       !why.empty())
     throw MeshError({3, volumeTag}, why + " (sizes too small for the volume?)");
-  const std::vector<Pyramid> pyramids = standPyramids(*volume, plc, xyz, mesh);
+  result.pyramids = standPyramids(*volume, plc, xyz);
   rejectEmbeddedOutside(*volume, plc, xyz);
   std::vector<Vec3> holes;
   for (std::size_t s = 1; s < plc.shellStart.size(); ++s) {
@@ -387,15 +389,34 @@ void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
   refineToSizes(tets, sizes);
   const auto firstInterior = static_cast<std::uint32_t>(plc.nodes.size());
   if (options.optimize) smoothVertices(tets, firstInterior, kSmoothingPasses);
-  std::vector<std::uint32_t> live = tets.liveTetrahedra();
-  optimizeTetrahedra(plc, options, firstInterior, tets.points, live);
-  appendTetrahedra(*volume, plc, tets.points, live, mesh);
-  if (!pyramids.empty()) {
-    ElementBlock& block = mesh.entity({3, volumeTag}).block(ElementType::Pyramid5);
-    for (const Pyramid& p : pyramids)
+  result.tets = tets.liveTetrahedra();
+  optimizeTetrahedra(plc, options, firstInterior, tets.points, result.tets);
+  result.points = std::move(tets.points);
+  return result;
+}
+
+void commitVolumeMesh(const Model& model, VolumeMeshing&& planned, Mesh& mesh) {
+  if (planned.tets.empty() && planned.plc.nodes.empty()) return;  // layered: nothing planned
+  const ModelVolume& volume = *model.volume(planned.volume);
+  VolumePlc& plc = planned.plc;
+  EntityMesh& em = mesh.entity({3, planned.volume});
+  for (std::size_t i = 0; i < plc.nodes.size(); ++i)  // the pyramids' apexes
+    if (plc.nodes[i] == kNoNode) {
+      plc.nodes[i] = mesh.addNode(planned.points[i]);
+      em.nodes.push_back(plc.nodes[i]);
+    }
+  appendTetrahedra(volume, plc, planned.points, planned.tets, mesh);
+  if (!planned.pyramids.empty()) {
+    ElementBlock& block = mesh.entity({3, planned.volume}).block(ElementType::Pyramid5);
+    for (const Pyramid& p : planned.pyramids)
       for (int k : p) block.nodes.push_back(plc.nodes[k]);
   }
-  requireEmbeddedConformity(*volume, mesh);
+  requireEmbeddedConformity(volume, mesh);
+}
+
+void meshVolume(const Model& model, const MeshOptions& options, int volumeTag,
+                const InteriorSize& interiorSize, Mesh& mesh) {
+  commitVolumeMesh(model, planVolumeMesh(model, options, volumeTag, interiorSize, mesh), mesh);
 }
 
 }  // namespace geomesh
