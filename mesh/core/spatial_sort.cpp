@@ -12,15 +12,14 @@
 
 namespace geomesh {
 
-std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Traits =
-      CGAL::Spatial_sort_traits_adapter_2<Kernel,
-                                          CGAL::Pointer_property_map<Kernel::Point_2>::type>;
-  std::vector<Kernel::Point_2> cgalPoints;
-  cgalPoints.reserve(points.size());
-  for (Vec2 p : points) cgalPoints.emplace_back(p.u, p.v);
-  std::vector<std::size_t> order(points.size());
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// The order of CGAL points by spatial_sort (its BRIO rounds use a fixed seed: deterministic).
+template <class Traits, class CgalPoint>
+std::vector<std::uint32_t> sortedOrder(std::vector<CgalPoint>& cgalPoints) {
+  std::vector<std::size_t> order(cgalPoints.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(cgalPoints)));
   std::vector<std::uint32_t> result(order.size());
@@ -28,20 +27,26 @@ std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points) {
   return result;
 }
 
+}  // namespace
+
+std::vector<std::uint32_t> spatialOrder(std::span<const Vec2> points) {
+  using Traits =
+      CGAL::Spatial_sort_traits_adapter_2<Kernel,
+                                          CGAL::Pointer_property_map<Kernel::Point_2>::type>;
+  std::vector<Kernel::Point_2> cgalPoints;
+  cgalPoints.reserve(points.size());
+  for (Vec2 p : points) cgalPoints.emplace_back(p.u, p.v);
+  return sortedOrder<Traits>(cgalPoints);
+}
+
 std::vector<std::uint32_t> spatialOrder(std::span<const Vec3> points) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Traits =
       CGAL::Spatial_sort_traits_adapter_3<Kernel,
                                           CGAL::Pointer_property_map<Kernel::Point_3>::type>;
   std::vector<Kernel::Point_3> cgalPoints;
   cgalPoints.reserve(points.size());
   for (const Vec3& p : points) cgalPoints.emplace_back(p.x, p.y, p.z);
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(cgalPoints)));
-  std::vector<std::uint32_t> result(order.size());
-  std::copy(order.begin(), order.end(), result.begin());
-  return result;
+  return sortedOrder<Traits>(cgalPoints);
 }
 
 }  // namespace geomesh

@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "delaunay_tets_fixtures.h"
 #include "mesh/core/predicates.h"
 
 namespace geomesh {
@@ -65,16 +66,6 @@ void expectValidDelaunay(const DelaunayTets& mesh, bool delaunay) {
   EXPECT_EQ(alive, mesh.tetCount());
 }
 
-double totalVolume(const DelaunayTets& mesh) {
-  double volume = 0;
-  for (std::uint32_t t = 0; t < mesh.slotCount(); ++t) {
-    if (!mesh.alive(t)) continue;
-    const std::uint32_t* v = &mesh.vertices[4 * t];
-    const Vec3 a = mesh.points[v[0]];
-    volume += dot(cross(mesh.points[v[1]] - a, mesh.points[v[2]] - a), mesh.points[v[3]] - a) / 6;
-  }
-  return volume;
-}
 
 TEST(DelaunayTets, FaceTableTurnsCounterClockwiseSeenFromTheOppositeVertex) {
   const Vec3 v[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -97,8 +88,8 @@ TEST(DelaunayTets, RandomPointsGiveADelaunayTetrahedralizationOfTheirHull) {
       for (int k = 0; k < 4; ++k) usedPoints += mesh.vertices[4 * t + k] < points.size();
   EXPECT_GT(usedPoints, 0u);
   for (std::uint32_t p = 0; p < points.size(); ++p) EXPECT_TRUE(used.count(p)) << p;
-  EXPECT_GT(totalVolume(mesh), 0.85);
-  EXPECT_LE(totalVolume(mesh), 1.0);
+  EXPECT_GT(testing::volumeOf(mesh), 0.85);
+  EXPECT_LE(testing::volumeOf(mesh), 1.0);
 }
 
 TEST(DelaunayTets, CosphericalGridAndDuplicatesAreHandled) {
@@ -106,7 +97,7 @@ TEST(DelaunayTets, CosphericalGridAndDuplicatesAreHandled) {
   points.push_back(points[17]);  // a duplicate is skipped
   const DelaunayTets mesh = DelaunayTets::build(points);
   expectValidDelaunay(mesh, true);
-  EXPECT_NEAR(totalVolume(mesh), (4 / 3.0) * (4 / 3.0) * (4 / 3.0), 1e-12);
+  EXPECT_NEAR(testing::volumeOf(mesh), (4 / 3.0) * (4 / 3.0) * (4 / 3.0), 1e-12);
 }
 
 TEST(DelaunayTets, ConstrainedFacesAreNeitherCrossedNorRemoved) {
@@ -138,7 +129,7 @@ TEST(DelaunayTets, ConstrainedFacesAreNeitherCrossedNorRemoved) {
     }
   }
   EXPECT_EQ(keptHalves, 2);
-  EXPECT_NEAR(totalVolume(mesh), 1 / 6.0 + 1 / 3.0, 1e-12);
+  EXPECT_NEAR(testing::volumeOf(mesh), 1 / 6.0 + 1 / 3.0, 1e-12);
   // A point nearer than the distance asked to a vertex of its cavity is refused.
   EXPECT_EQ(mesh.insert({0.05, 0.05, 0.05}, mesh.lastTet(), 0.2).status,
             DelaunayTets::Insertion::kTooClose);

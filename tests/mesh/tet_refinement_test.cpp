@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "delaunay_tets_fixtures.h"
 #include "mesh/core/predicates.h"
 #include "mesh/volumes/boundary_delaunay.h"
 #include "mesh/volumes/volume_estimate.h"
@@ -75,16 +76,6 @@ CubeComplex cubeComplex(int n) {
   return c;
 }
 
-double volumeOf(const DelaunayTets& mesh) {
-  double volume = 0;
-  for (std::uint32_t t = 0; t < mesh.slotCount(); ++t) {
-    if (!mesh.alive(t)) continue;
-    const std::uint32_t* v = &mesh.vertices[4 * t];
-    const Vec3 a = mesh.points[v[0]];
-    volume += dot(cross(mesh.points[v[1]] - a, mesh.points[v[2]] - a), mesh.points[v[3]] - a) / 6;
-  }
-  return volume;
-}
 
 // Faces by how many alive tetrahedra use them.
 std::map<Key, int> faceUses(const DelaunayTets& mesh) {
@@ -151,7 +142,7 @@ TEST(BoundaryDelaunay, CubeSurfaceGivesTheCubesTetrahedra) {
   const auto mesh = boundaryDelaunay(c.plc, c.xyz, {});
   ASSERT_TRUE(mesh);
   expectConforming(*mesh, c.plc);
-  EXPECT_NEAR(volumeOf(*mesh), 1, 1e-12);
+  EXPECT_NEAR(testing::volumeOf(*mesh), 1, 1e-12);
   EXPECT_EQ(mesh->points.size(), c.xyz.size());  // no node added
   // A hole point inside leaves nothing: the whole cube is the hole.
   EXPECT_FALSE(boundaryDelaunay(c.plc, c.xyz, {{0.5, 0.5, 0.5}}));
@@ -188,7 +179,7 @@ TEST(TetRefinement, UniformSizeIsFollowedInsideTheCube) {
   EXPECT_GT(stats.inserted, 20u);
   EXPECT_EQ(sizes.atVertex.size(), mesh->points.size());
   expectConforming(*mesh, c.plc);
-  EXPECT_NEAR(volumeOf(*mesh), 1, 1e-12);
+  EXPECT_NEAR(testing::volumeOf(*mesh), 1, 1e-12);
   // Edges at an inserted vertex are about the size asked for: a tetrahedron is split while its
   // circumradius exceeds 1.05 times the size, and a regular one's is 0.61 times its edge, so
   // edges up to about 1.7 times the size are left, as the reference's Delaunay leaves them.
@@ -231,7 +222,7 @@ TEST(TetRefinement, Deterministic) {
   refineToSizes(*first, a);
   refineToSizes(*second, b);
   expectConforming(*first, c.plc);
-  EXPECT_NEAR(volumeOf(*first), 1, 1e-12);
+  EXPECT_NEAR(testing::volumeOf(*first), 1, 1e-12);
   EXPECT_EQ(first->liveTetrahedra(), second->liveTetrahedra());
   ASSERT_EQ(first->points.size(), second->points.size());
   for (std::size_t i = 0; i < first->points.size(); ++i)
