@@ -86,9 +86,9 @@ bool DelaunayTets::removesKeptEdge(std::span<const std::uint32_t> cavity) const 
   for (std::uint32_t t : cavity) {
     const std::uint32_t* v = &vertices[4 * std::size_t{t}];
     for (int i = 0; i < 4; ++i) {
-      if (!keptVertex_[v[i]]) continue;
+      if (!isKeptVertex(v[i])) continue;
       for (int j = i + 1; j < 4; ++j) {
-        if (!keptVertex_[v[j]]) continue;
+        if (!isKeptVertex(v[j])) continue;
         const std::uint64_t key = edgeKey(v[i], v[j]);
         if (!std::binary_search(keptEdges_.begin(), keptEdges_.end(), key)) continue;
         bool onBoundary = false;

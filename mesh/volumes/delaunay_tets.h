@@ -102,6 +102,8 @@ class DelaunayTets {
 
   std::uint32_t newSlot();
   bool removesKeptEdge(std::span<const std::uint32_t> cavity) const;
+  // Vertices inserted after keepEdges are on no kept edge.
+  bool isKeptVertex(std::uint32_t v) const { return v < keptVertex_.size() && keptVertex_[v]; }
   bool shapeCavity(Vec3 p, std::uint32_t t0);
 
   std::vector<std::uint32_t> free_;

@@ -42,6 +42,14 @@ double quality(const std::vector<Vec3>& xyz, const Tet& t) {
   return tetGamma(a, b, c, d);
 }
 
+// Whether a tetrahedron's gamma is below the threshold; its mean ratio settles most cases
+// without gamma (see TetOptimizer::gammaOf).
+bool gammaBelow(const std::vector<Vec3>& xyz, const Tet& t, double threshold) {
+  const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
+  if (threshold <= 0.6 && tetMeanRatioCubed(a, b, c, d) >= 0.8 * 0.8 * 0.8) return false;
+  return quality(xyz, t) < threshold;
+}
+
 double shape(const std::vector<Vec3>& xyz, const Tet& t) {
   const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
   if (orient3d(a, b, c, d) <= 0) return -1;
@@ -363,14 +371,52 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
   for (const auto& s : keptSegments) edges.push_back(edgeKey(int(s[0]), int(s[1])));
   std::sort(faces.begin(), faces.end());
   std::sort(edges.begin(), edges.end());
-  std::vector<Tet> local(tets.size() / 4);
-  for (std::size_t i = 0; i < tets.size(); ++i) local[i / 4][i % 4] = static_cast<int>(tets[i]);
-  TetOptimizer optimizer(points, std::move(movable), local, threshold, std::move(faces),
-                         std::move(edges));
-  const TetOptimizerStats stats = optimizer.run();
-  tets.clear();
-  for (const Tet& t : optimizer.tetrahedra())
-    for (int n : t) tets.push_back(static_cast<std::uint32_t>(n));
+  // Only the balls of the vertices of the tetrahedra below the threshold take part: their
+  // vertices move, their faces and edges change; every other tetrahedron is left as it is (the
+  // faces between the two sets have a single tetrahedron in the region, and so stay). A few
+  // rounds, for the poor tetrahedra a round leaves at the border of its region.
+  constexpr int kRounds = 3;
+  TetOptimizerStats stats;
+  for (int round = 0; round < kRounds; ++round) {
+    std::vector<char> poor(points.size(), 0);
+    for (std::size_t i = 0; i < tets.size(); i += 4) {
+      const Tet t{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
+      if (gammaBelow(points, t, threshold))
+        for (int n : t) poor[n] = 1;
+    }
+    // One ring more: the neighbours of the poor tetrahedra's vertices may move too.
+    {
+      std::vector<char> grown = poor;
+      for (std::size_t i = 0; i < tets.size(); i += 4) {
+        const Tet t{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
+        if (poor[t[0]] || poor[t[1]] || poor[t[2]] || poor[t[3]])
+          for (int n : t) grown[n] = 1;
+      }
+      poor.swap(grown);
+    }
+    std::vector<Tet> region;
+    std::vector<std::uint32_t> rest;
+    for (std::size_t i = 0; i < tets.size(); i += 4) {
+      const Tet t{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
+      if (poor[t[0]] || poor[t[1]] || poor[t[2]] || poor[t[3]])
+        region.push_back(t);
+      else
+        rest.insert(rest.end(), tets.begin() + std::ptrdiff_t(i),
+                    tets.begin() + std::ptrdiff_t(i + 4));
+    }
+    if (region.empty()) break;
+    std::vector<char> free = movable;
+    for (std::size_t n = 0; n < free.size(); ++n) free[n] = free[n] && poor[n];
+    TetOptimizer optimizer(points, std::move(free), region, threshold, faces, edges);
+    const TetOptimizerStats done = optimizer.run();
+    tets = std::move(rest);
+    for (const Tet& t : optimizer.tetrahedra())
+      for (int n : t) tets.push_back(static_cast<std::uint32_t>(n));
+    stats.edgeRemovals += done.edgeRemovals;
+    stats.faceSwaps += done.faceSwaps;
+    stats.nodeMoves += done.nodeMoves;
+    if (done.edgeRemovals + done.faceSwaps + done.nodeMoves == 0) break;
+  }
   return stats;
 }
 

@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -14,33 +16,47 @@ constexpr double kTetrahedraPerSizeCube = 4.7;
 constexpr double kBytesPerTetrahedron = 150;
 constexpr double kMostTetrahedra = 1e9;  // 32-bit links: 4 per tetrahedron
 
-double shellVolume(const VolumePlc& plc, const std::vector<Vec3>& xyz, std::size_t shell) {
-  const std::size_t first = plc.shellStart[shell], last = plc.shellEndOf(shell);
-  if (first == last) return 0;
-  const Vec3 origin = xyz[plc.triangles[first][0]];
-  double volume = 0;
-  for (std::size_t t = first; t < last; ++t) {
-    const PlcTriangle& c = plc.triangles[t];
-    volume += dot(cross(xyz[c[1]] - origin, xyz[c[2]] - origin), xyz[c[0]] - origin) / 6;
+// The shells' faces as triangles (quadrangles split in two), each with its shell.
+struct Face {
+  std::array<int, 3> corners;
+  std::size_t shell;
+};
+
+std::vector<Face> shellFaces(const VolumePlc& plc) {
+  std::vector<Face> faces;
+  std::size_t shell = 0;
+  for (std::size_t t = 0; t < plc.shellEnd; ++t) {
+    while (shell + 1 < plc.shellStart.size() && t >= plc.shellStart[shell + 1]) ++shell;
+    faces.push_back({plc.triangles[t], shell});
   }
-  return std::abs(volume);
+  for (std::size_t q = 0; q < plc.quads.size(); ++q) {
+    const auto& c = plc.quads[q];
+    faces.push_back({{c[0], c[1], c[2]}, plc.quadShellOf[q]});
+    faces.push_back({{c[0], c[2], c[3]}, plc.quadShellOf[q]});
+  }
+  return faces;
 }
 
 }  // namespace
 
 double estimateTetrahedra(const VolumePlc& plc, const std::vector<Vec3>& xyz,
-                          const std::vector<double>& sizes) {
-  if (plc.shellStart.empty()) return 0;
-  double volume = shellVolume(plc, xyz, 0);
-  for (std::size_t s = 1; s < plc.shellStart.size(); ++s) volume -= shellVolume(plc, xyz, s);
+                          const MeshOptions& options) {
+  const std::vector<Face> faces = shellFaces(plc);
+  if (faces.empty()) return 0;
+  std::vector<double> volumes(plc.shellStart.size() + 1, 0);
+  const Vec3 origin = xyz[faces.front().corners[0]];
   double area = 0, weighted = 0;
-  for (std::size_t t = 0; t < plc.shellEnd; ++t) {
-    const PlcTriangle& c = plc.triangles[t];
-    const double a = norm(cross(xyz[c[1]] - xyz[c[0]], xyz[c[2]] - xyz[c[0]])) / 2;
-    area += a;
-    weighted += a * (sizes[c[0]] + sizes[c[1]] + sizes[c[2]]) / 3;
+  for (const Face& f : faces) {
+    const Vec3 a = xyz[f.corners[0]], b = xyz[f.corners[1]], c = xyz[f.corners[2]];
+    volumes[f.shell] += dot(cross(b - origin, c - origin), a - origin) / 6;
+    const double faceArea = norm(cross(b - a, c - a)) / 2;
+    const double edge = (norm(b - a) + norm(c - b) + norm(a - c)) / 3;
+    area += faceArea;
+    weighted += faceArea * std::clamp(edge, options.sizeMin, options.sizeMax);
   }
-  if (!(area > 0) || !(volume > 0)) return 0;
+  double volume = std::abs(volumes[0]);
+  for (std::size_t s = 1; s < volumes.size(); ++s) volume -= std::abs(volumes[s]);
+  if (!(area > 0) || !(volume > 0) || !(weighted > 0)) return 0;
   const double size = weighted / area;
   return kTetrahedraPerSizeCube * volume / (size * size * size);
 }

@@ -359,10 +359,8 @@ VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int
   plc = collectVolumePlc(model, *volume, mesh);
   std::vector<Vec3> xyz;
   for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
-  // Refused before any costly work when it would not fit (the estimate needs the shells'
-  // sizes, and ignores the pyramids to come).
-  if (const std::string why =
-          tooManyTetrahedra(estimateTetrahedra(plc, xyz, plcNodeSizes(plc, xyz, options)));
+  // Refused before any costly work when it would not fit.
+  if (const std::string why = tooManyTetrahedra(estimateTetrahedra(plc, xyz, options));
       !why.empty())
     throw MeshError({3, volumeTag}, why + " (sizes too small for the volume?)");
   result.pyramids = standPyramids(*volume, plc, xyz);
