@@ -23,6 +23,9 @@ double tetGamma(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 // the sign of its volume: 1 for the regular tetrahedron, 0 when flat. It orders tetrahedra as
 // the mean ratio does and costs no root, for optimizers' comparisons.
 double tetMeanRatioCubed(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+// Above this, tetMeanRatioCubed's sign (that of a volume computed in doubles) is certainly the
+// tetrahedron's orientation: rounding moves it by some 1e-15 of its terms.
+inline constexpr double kSureMeanRatioCubed = 1e-6;
 double tetSicn(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 enum class QualityMeasure { Gamma, Sicn };

@@ -303,41 +303,6 @@ std::vector<std::uint32_t> DelaunayTets::liveTetrahedra() const {
   return tets;
 }
 
-std::vector<std::uint32_t> DelaunayTets::compact() {
-  const std::size_t slots = slotCount();
-  // Counting sort on the lowest vertex.
-  std::vector<std::uint32_t> start(points.size() + 1, 0);
-  auto lowest = [&](std::uint32_t t) {
-    const std::uint32_t* v = &vertices[4 * std::size_t{t}];
-    return std::min(std::min(v[0], v[1]), std::min(v[2], v[3]));
-  };
-  for (std::uint32_t t = 0; t < slots; ++t)
-    if (alive(t)) ++start[lowest(t) + 1];
-  for (std::size_t i = 0; i < points.size(); ++i) start[i + 1] += start[i];
-  std::vector<std::uint32_t> renumber(slots, kNoTet);
-  for (std::uint32_t t = 0; t < slots; ++t)
-    if (alive(t)) renumber[t] = start[lowest(t)]++;
-  const std::size_t count = tetCount();
-  std::vector<std::uint32_t> v(4 * count), n(4 * count);
-  std::vector<std::uint8_t> f(count);
-  for (std::uint32_t t = 0; t < slots; ++t) {
-    const std::uint32_t to = renumber[t];
-    if (to == kNoTet) continue;
-    f[to] = flags[t];
-    for (int k = 0; k < 4; ++k) {
-      v[4 * std::size_t{to} + k] = vertices[4 * std::size_t{t} + k];
-      const std::uint32_t h = neighbours[4 * std::size_t{t} + k];
-      n[4 * std::size_t{to} + k] = h == kNoTet ? kNoTet : 4 * renumber[h >> 2] + (h & 3u);
-    }
-  }
-  vertices.swap(v);
-  neighbours.swap(n);
-  flags.swap(f);
-  free_.clear();
-  last_ = last_ < slots && renumber[last_] != kNoTet ? renumber[last_] : 0;
-  return renumber;
-}
-
 DelaunayTets DelaunayTets::fromTetrahedra(
     std::vector<Vec3> points, std::vector<std::uint32_t> tets,
     std::span<const std::array<std::uint32_t, 3>> keptFaces) {

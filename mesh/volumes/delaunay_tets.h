@@ -84,10 +84,6 @@ class DelaunayTets {
   // The alive tetrahedra, 4 vertices each.
   std::vector<std::uint32_t> liveTetrahedra() const;
 
-  // Removes the free slots and renumbers the tetrahedra by their lowest vertex, so that
-  // tetrahedra near each other in space (vertices are numbered in insertion order) are near
-  // each other in memory. Returns the new number of each old slot (kNoTet for a free one).
-  std::vector<std::uint32_t> compact();
 
   // A tetrahedron created by the last successful insertion (or any alive one).
   std::uint32_t lastTet() const { return last_; }

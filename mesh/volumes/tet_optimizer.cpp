@@ -52,8 +52,10 @@ bool gammaBelow(const std::vector<Vec3>& xyz, const Tet& t, double threshold) {
 
 double shape(const std::vector<Vec3>& xyz, const Tet& t) {
   const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
-  if (orient3d(a, b, c, d) <= 0) return -1;
-  return tetMeanRatioCubed(a, b, c, d);
+  const double measure = tetMeanRatioCubed(a, b, c, d);
+  if (measure > kSureMeanRatioCubed) return measure;
+  if (measure < -kSureMeanRatioCubed || orient3d(a, b, c, d) <= 0) return -1;
+  return std::max(measure, 0.0);
 }
 
 // A tetrahedral mesh being modified in place: dead tetrahedra stay as holes in the arrays, and
@@ -405,6 +407,7 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
                     tets.begin() + std::ptrdiff_t(i + 4));
     }
     if (region.empty()) break;
+    std::vector<std::uint32_t>().swap(tets);  // all in `region` or `rest` now
     std::vector<char> free = movable;
     for (std::size_t n = 0; n < free.size(); ++n) free[n] = free[n] && poor[n];
     TetOptimizer optimizer(points, std::move(free), region, threshold, faces, edges);

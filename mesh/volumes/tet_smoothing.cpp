@@ -53,8 +53,9 @@ std::size_t smoothVertices(DelaunayTets& mesh, std::uint32_t firstMovable, int p
         better = std::min(better, tetMeanRatioCubed(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]],
                                         mesh.points[t[3]]));
       }
+      // Positive for certain when the worst is clearly so; else the exact test decides.
       bool accept = better > worst;
-      for (std::uint32_t i = first; i < last && accept; ++i) {
+      for (std::uint32_t i = first; i < last && accept && better <= kSureMeanRatioCubed; ++i) {
         const std::uint32_t* t = &mesh.vertices[4 * std::size_t{around[i]}];
         accept = orient3d(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]],
                               mesh.points[t[3]]) > 0;

@@ -388,8 +388,9 @@ VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int
   const auto firstInterior = static_cast<std::uint32_t>(plc.nodes.size());
   if (options.optimize) smoothVertices(tets, firstInterior, kSmoothingPasses);
   result.tets = tets.liveTetrahedra();
-  optimizeTetrahedra(plc, options, firstInterior, tets.points, result.tets);
   result.points = std::move(tets.points);
+  tets = DelaunayTets();  // its links are not needed any more: memory back before optimizing
+  optimizeTetrahedra(plc, options, firstInterior, result.points, result.tets);
   return result;
 }
 
