@@ -147,42 +147,40 @@ std::size_t standOnPoorBoundaryFaces(DelaunayTets& mesh, RefinementSizes& sizes)
   return inserted;
 }
 
-}  // namespace
+// The rounds of refineToSizes over one mesh.
+class Refinement {
+ public:
+  Refinement(DelaunayTets& mesh, RefinementSizes& sizes) : mesh_(mesh), sizes_(sizes) {}
 
-RefinementStats refineToSizes(DelaunayTets& mesh, RefinementSizes& sizes) {
-  RefinementStats stats;
-  // A tetrahedron whose height is under 1e-3 of its longest edge is not made at all.
-  mesh.refuseFlat(1e-3);
-  // The field's sizes hold at the existing vertices too, where the boundary's may be smaller.
-  if (sizes.field)
-    for (std::size_t i = 0; i < sizes.atVertex.size(); ++i)
-      sizes.atVertex[i] = std::min(sizes.atVertex[i], sizes.field(mesh.points[i]));
-  std::vector<std::uint32_t> active;
-  for (std::uint32_t t = 0; t < mesh.slotCount(); ++t)
-    if (mesh.alive(t)) active.push_back(t);
-  std::vector<int> seen;  // per slot, the last round that examined it
-  std::vector<Candidate> candidates;
-  std::vector<Vec3> places;
-  std::vector<std::uint32_t> next;
-  CandidateFilter filter;
-  auto sizeAt = [&](Vec3 p, const std::uint32_t* v, const double* weights) {
-    double interpolated = 0;
-    for (int k = 0; k < 4; ++k) interpolated += weights[k] * sizes.atVertex[v[k]];
-    if (!sizes.field) return interpolated;
-    const double field = sizes.field(p);
-    return sizes.extendFromBoundary ? std::min(interpolated, field) : field;
-  };
-  for (int round = 0; round < kMaxRounds && !active.empty(); ++round) {
-    seen.resize(mesh.slotCount(), -1);
-    candidates.clear();
+  RefinementStats run() {
+    std::vector<std::uint32_t> active;
+    for (std::uint32_t t = 0; t < mesh_.slotCount(); ++t)
+      if (mesh_.alive(t)) active.push_back(t);
+    for (int round = 0; round < kMaxRounds && !active.empty(); ++round) {
+      collectCandidates(active, round);
+      if (candidates_.empty()) break;
+      ++stats_.rounds;
+      spaceOut();
+      active.clear();
+      if (insertCandidates(active) == 0) break;
+    }
+    return stats_;
+  }
+
+ private:
+  // The circumcentres of the tetrahedra of `active` (not yet examined this round) whose
+  // circumradius exceeds kRadiusRatio times their vertices' mean size.
+  void collectCandidates(const std::vector<std::uint32_t>& active, int round) {
+    seen_.resize(mesh_.slotCount(), -1);
+    candidates_.clear();
     for (std::uint32_t t : active) {
-      if (!mesh.alive(t) || seen[t] == round) continue;
-      seen[t] = round;
-      const std::uint32_t* v = &mesh.vertices[4 * std::size_t{t}];
-      const Vec3 &a = mesh.points[v[0]], &b = mesh.points[v[1]], &c = mesh.points[v[2]],
-                 &d = mesh.points[v[3]];
+      if (!mesh_.alive(t) || seen_[t] == round) continue;
+      seen_[t] = round;
+      const std::uint32_t* v = &mesh_.vertices[4 * std::size_t{t}];
+      const Vec3 &a = mesh_.points[v[0]], &b = mesh_.points[v[1]], &c = mesh_.points[v[2]],
+                 &d = mesh_.points[v[3]];
       double size = 0;
-      for (int k = 0; k < 4; ++k) size += sizes.atVertex[v[k]] / 4;
+      for (int k = 0; k < 4; ++k) size += sizes_.atVertex[v[k]] / 4;
       Vec3 centre;
       double radius2;
       if (!circumsphere(a, b, c, d, centre, radius2)) continue;
@@ -192,58 +190,91 @@ RefinementStats refineToSizes(DelaunayTets& mesh, RefinementSizes& sizes) {
       const double reach = std::max({norm(a - centroid), norm(b - centroid), norm(c - centroid),
                                      norm(d - centroid)});
       if (norm(centre - centroid) > 4 * reach) centre = centroid;
-      candidates.push_back({centre, t, size});
+      candidates_.push_back({centre, t, size});
     }
-    if (candidates.empty()) break;
-    ++stats.rounds;
-    // Spaced out among themselves in the order they were made (that of the tetrahedra, made
-    // by insertions along a Hilbert curve), then sorted along the curve for insertion.
-    filter.reset(candidates.size());
+  }
+
+  // Spaced out among themselves in the order they were made (that of the tetrahedra, made by
+  // insertions along a Hilbert curve).
+  void spaceOut() {
+    filter_.reset(candidates_.size());
     std::size_t kept = 0;
-    for (const Candidate& c : candidates)
-      if (filter.keep(c.point, c.size))
-        candidates[kept++] = c;
+    for (const Candidate& c : candidates_)
+      if (filter_.keep(c.point, c.size))
+        candidates_[kept++] = c;
       else
-        ++stats.refusedTooClose;
-    candidates.resize(kept);
-    places.clear();
-    for (const Candidate& c : candidates) places.push_back(c.point);
-    next.clear();
+        ++stats_.refusedTooClose;
+    candidates_.resize(kept);
+  }
+
+  // The size wanted at p, in the tetrahedron with vertices v at the barycentric weights.
+  double sizeAt(Vec3 p, const std::uint32_t* v, const double* weights) const {
+    double interpolated = 0;
+    for (int k = 0; k < 4; ++k) interpolated += weights[k] * sizes_.atVertex[v[k]];
+    if (!sizes_.field) return interpolated;
+    const double field = sizes_.field(p);
+    return sizes_.extendFromBoundary ? std::min(interpolated, field) : field;
+  }
+
+  // Inserts the candidates along the Hilbert curve; the tetrahedra made go to `made`.
+  std::size_t insertCandidates(std::vector<std::uint32_t>& made) {
+    places_.clear();
+    for (const Candidate& c : candidates_) places_.push_back(c.point);
     std::size_t inserted = 0;
-    for (std::uint32_t i : spatialOrder(places)) {
-      const Candidate& c = candidates[i];
-      const bool generatorAlive = mesh.alive(c.tet);
+    for (std::uint32_t i : spatialOrder(places_)) {
+      const Candidate& c = candidates_[i];
+      const bool generatorAlive = mesh_.alive(c.tet);
       double weights[4];
       Vec3 p = c.point;
-      std::uint32_t where = mesh.locate(p, generatorAlive ? c.tet : mesh.lastTet(), weights);
+      std::uint32_t where = mesh_.locate(p, generatorAlive ? c.tet : mesh_.lastTet(), weights);
       if (where == kNoTet) {
         // Outside the domain (or behind a kept face): the generator's centroid instead.
         if (!generatorAlive) {
-          ++stats.refusedOther;
+          ++stats_.refusedOther;
           continue;
         }
-        const std::uint32_t* v = &mesh.vertices[4 * std::size_t{c.tet}];
-        p = (mesh.points[v[0]] + mesh.points[v[1]] + mesh.points[v[2]] + mesh.points[v[3]]) / 4;
+        const std::uint32_t* v = &mesh_.vertices[4 * std::size_t{c.tet}];
+        p = (mesh_.points[v[0]] + mesh_.points[v[1]] + mesh_.points[v[2]] + mesh_.points[v[3]]) /
+            4;
         where = c.tet;
         std::fill(weights, weights + 4, 0.25);
       }
-      const double size = sizeAt(p, &mesh.vertices[4 * std::size_t{where}], weights);
-      const auto result = mesh.insert(p, where, kSpacing * size);
+      const double size = sizeAt(p, &mesh_.vertices[4 * std::size_t{where}], weights);
+      const auto result = mesh_.insert(p, where, kSpacing * size);
       if (result.status == DelaunayTets::Insertion::kInserted) {
-        sizes.atVertex.push_back(size);
-        const auto made = mesh.created();
-        next.insert(next.end(), made.begin(), made.end());
+        sizes_.atVertex.push_back(size);
+        const auto created = mesh_.created();
+        made.insert(made.end(), created.begin(), created.end());
         ++inserted;
       } else if (result.status == DelaunayTets::Insertion::kTooClose) {
-        ++stats.refusedTooClose;
+        ++stats_.refusedTooClose;
       } else {
-        ++stats.refusedOther;
+        ++stats_.refusedOther;
       }
     }
-    stats.inserted += inserted;
-    if (inserted == 0) break;
-    active.swap(next);
+    stats_.inserted += inserted;
+    return inserted;
   }
+
+  DelaunayTets& mesh_;
+  RefinementSizes& sizes_;
+  RefinementStats stats_;
+  std::vector<int> seen_;  // per slot, the last round that examined it
+  std::vector<Candidate> candidates_;
+  std::vector<Vec3> places_;
+  CandidateFilter filter_;
+};
+
+}  // namespace
+
+RefinementStats refineToSizes(DelaunayTets& mesh, RefinementSizes& sizes) {
+  // A tetrahedron whose height is under 1e-3 of its longest edge is not made at all.
+  mesh.refuseFlat(1e-3);
+  // The field's sizes hold at the existing vertices too, where the boundary's may be smaller.
+  if (sizes.field)
+    for (std::size_t i = 0; i < sizes.atVertex.size(); ++i)
+      sizes.atVertex[i] = std::min(sizes.atVertex[i], sizes.field(mesh.points[i]));
+  RefinementStats stats = Refinement(mesh, sizes).run();
   stats.inserted += standOnPoorBoundaryFaces(mesh, sizes);
   return stats;
 }
