@@ -325,16 +325,8 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
       warned = true;
       tetrahedral.push_back(entry.first);
     }
-    if (volume.mesh == &meshVolume) {
-      meshTetrahedralVolumes(model, options, tetrahedral, fields, mesh);
-    } else {  // another algorithm: one volume after the other
-      for (int tag : tetrahedral) {
-        InteriorSize interiorSize;
-        if (fields.hasBackground())
-          interiorSize = [&fields, where = EntityId{3, tag}](Vec3 p) { return fields.at(p, where); };
-        volume.mesh(model, options, tag, interiorSize, mesh);
-      }
-    }
+    // Every available row of the registry is meshVolume, planned and committed apart here.
+    meshTetrahedralVolumes(model, options, tetrahedral, fields, mesh);
     extruded.meshVolumes(mesh);
     const MeshCheckReport report = checkVolumeElements(model, mesh);
     if (!report.ok())

@@ -26,15 +26,11 @@ bool holdsSegments(const DelaunayTets& dt, const VolumePlc& plc) {
     const std::uint32_t* v = &dt.vertices[4 * std::size_t{t}];
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
-        edges.push_back(std::uint64_t{std::min(v[i], v[j])} << 32 | std::max(v[i], v[j]));
+        edges.push_back(vertexPairKey(v[i], v[j]));
   }
   std::sort(edges.begin(), edges.end());
-  for (const PlcSegment& s : plc.segments) {
-    const auto a = static_cast<std::uint32_t>(s[0]), b = static_cast<std::uint32_t>(s[1]);
-    if (!std::binary_search(edges.begin(), edges.end(),
-                            std::uint64_t{std::min(a, b)} << 32 | std::max(a, b)))
-      return false;
-  }
+  for (const auto& [a, b] : plcSegments(plc))
+    if (!std::binary_search(edges.begin(), edges.end(), vertexPairKey(a, b))) return false;
   return true;
 }
 
@@ -65,7 +61,8 @@ std::optional<DelaunayTets> boundaryDelaunay(const VolumePlc& plc, const std::ve
     for (int f = 0; f < 4; ++f) {
       const int* face = DelaunayTets::kFace[f];
       const Key key = sortedKey(v[face[0]], v[face[1]], v[face[2]]);
-      const auto it = std::lower_bound(pieces.begin(), pieces.end(), std::pair<Key, bool>{key, false});
+      const auto it =
+          std::lower_bound(pieces.begin(), pieces.end(), std::pair<Key, bool>{key, false});
       if (it == pieces.end() || it->first != key) continue;
       const auto index = static_cast<std::int32_t>(it - pieces.begin());
       piece[4 * std::size_t{t} + f] = index;
@@ -116,18 +113,19 @@ std::optional<DelaunayTets> boundaryDelaunay(const VolumePlc& plc, const std::ve
       else if (n == kNoTet || outside[n >> 2])
         return std::nullopt;
     }
-    tets.insert(tets.end(), &dt.vertices[4 * std::size_t{t}], &dt.vertices[4 * std::size_t{t} + 4]);
+    const std::uint32_t* v = &dt.vertices[4 * std::size_t{t}];
+    tets.insert(tets.end(), v, v + 4);
   }
-  std::vector<std::array<std::uint32_t, 3>> embedded;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
+  for (std::size_t i = 0; i < pieces.size(); ++i)
     if (inside[i] != (pieces[i].second ? 2 : 1)) return std::nullopt;
-    if (pieces[i].second) embedded.push_back(pieces[i].first);
-  }
-  DelaunayTets mesh = DelaunayTets::fromTetrahedra(xyz, std::move(tets), embedded);
-  std::vector<std::array<std::uint32_t, 2>> segments;
-  for (const PlcSegment& s : plc.segments)
-    segments.push_back({std::uint32_t(s[0]), std::uint32_t(s[1])});
-  if (!segments.empty()) mesh.keepEdges(segments);
+  return complexTetrahedra(plc, xyz, std::move(tets));
+}
+
+DelaunayTets complexTetrahedra(const VolumePlc& plc, std::vector<Vec3> points,
+                               std::vector<std::uint32_t> tets) {
+  DelaunayTets mesh = DelaunayTets::fromTetrahedra(std::move(points), std::move(tets),
+                                                   plcTriangles(plc, plc.shellEnd));
+  if (!plc.segments.empty()) mesh.keepEdges(plcSegments(plc));
   return mesh;
 }
 

@@ -1,6 +1,7 @@
 // boundaryDelaunay: a volume's boundary-conforming tetrahedra straight from the Delaunay kernel.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -18,5 +19,10 @@ namespace geomesh {
 // then recovered otherwise (TetGen).
 std::optional<DelaunayTets> boundaryDelaunay(const VolumePlc& plc, const std::vector<Vec3>& xyz,
                                              const std::vector<Vec3>& holes);
+
+// The kernel's mesh of tetrahedra (4 indices into `points` each, positive) that hold the
+// complex: the embedded surfaces' triangles become kept faces, the segments kept edges.
+DelaunayTets complexTetrahedra(const VolumePlc& plc, std::vector<Vec3> points,
+                               std::vector<std::uint32_t> tets);
 
 }  // namespace geomesh

@@ -10,15 +10,6 @@
 
 namespace geomesh {
 
-namespace {
-
-std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t{a} << 32) | b;
-}
-
-}  // namespace
-
 std::uint32_t DelaunayTets::newSlot() {
   if (!free_.empty()) {
     const std::uint32_t t = free_.back();
@@ -73,11 +64,11 @@ std::uint32_t DelaunayTets::locate(Vec3 p, std::uint32_t start, double barycentr
   return kNoTet;
 }
 
-DelaunayTets::InsertResult DelaunayTets::insert(Vec3 p, std::uint32_t start, double minDistance) {
+DelaunayTets::Insertion DelaunayTets::insert(Vec3 p, std::uint32_t start, double minDistance) {
   points.push_back(p);
-  const InsertResult result =
+  const Insertion result =
       insertVertex(static_cast<std::uint32_t>(points.size() - 1), start, minDistance);
-  if (result.status != Insertion::kInserted) points.pop_back();
+  if (result != Insertion::kInserted) points.pop_back();
   return result;
 }
 
@@ -89,7 +80,7 @@ bool DelaunayTets::removesKeptEdge(std::span<const std::uint32_t> cavity) const 
       if (!isKeptVertex(v[i])) continue;
       for (int j = i + 1; j < 4; ++j) {
         if (!isKeptVertex(v[j])) continue;
-        const std::uint64_t key = edgeKey(v[i], v[j]);
+        const std::uint64_t key = vertexPairKey(v[i], v[j]);
         if (!std::binary_search(keptEdges_.begin(), keptEdges_.end(), key)) continue;
         bool onBoundary = false;
         for (std::uint32_t h : boundary_) {
@@ -150,7 +141,8 @@ bool DelaunayTets::shapeCavity(Vec3 p, std::uint32_t t0) {
       if (inCavity(t)) cavity_[kept++] = t;
     }
     cavity_.resize(kept);
-    // Connected through faces that are not kept, from t0: marked 2 while walked.
+    // Connected through faces that are not kept, from t0 (kReached while walked; boundary_
+    // serves as the walk's queue).
     std::size_t reached = 1;
     boundary_.assign(1, t0);
     flags[t0] |= kReached;
@@ -180,11 +172,11 @@ bool DelaunayTets::shapeCavity(Vec3 p, std::uint32_t t0) {
   return true;
 }
 
-DelaunayTets::InsertResult DelaunayTets::insertVertex(std::uint32_t vertex, std::uint32_t start,
-                                                      double minDistance) {
+DelaunayTets::Insertion DelaunayTets::insertVertex(std::uint32_t vertex, std::uint32_t start,
+                                                   double minDistance) {
   const Vec3 p = points[vertex];
   const std::uint32_t t0 = locate(p, start);
-  if (t0 == kNoTet) return {Insertion::kOutside, start};
+  if (t0 == kNoTet) return Insertion::kOutside;
   // Too close: a vertex of the cavity is the nearest one, so each tetrahedron is checked as
   // it joins, and most refusals come before the cavity is grown.
   const double limit = minDistance * minDistance;
@@ -197,14 +189,14 @@ DelaunayTets::InsertResult DelaunayTets::insertVertex(std::uint32_t vertex, std:
     }
     return false;
   };
-  if (tooClose(t0)) return {Insertion::kTooClose, t0};
+  if (tooClose(t0)) return Insertion::kTooClose;
   cavity_.clear();
   boundary_.clear();
   cavity_.push_back(t0);
   flags[t0] |= kInCavity;
   auto refuse = [&](Insertion why) {
     for (std::uint32_t t : cavity_) flags[t] &= ~kInCavity;
-    return InsertResult{why, t0};
+    return why;
   };
   for (std::size_t i = 0; i < cavity_.size(); ++i) {
     const std::uint32_t t = cavity_[i];
@@ -225,7 +217,6 @@ DelaunayTets::InsertResult DelaunayTets::insertVertex(std::uint32_t vertex, std:
   if (!keptEdges_.empty() && removesKeptEdge(cavity_)) return refuse(Insertion::kKeptEdge);
 
   // The new tetrahedra: each boundary face joined to p (p replaces the vertex opposite it).
-  const std::size_t count = boundary_.size();
   struct NewTet {
     std::array<std::uint32_t, 4> v;
     std::uint32_t outer;
@@ -247,7 +238,7 @@ DelaunayTets::InsertResult DelaunayTets::insertVertex(std::uint32_t vertex, std:
     flags[t] = kDeleted;
     free_.push_back(t);
   }
-  std::size_t tableSize = std::bit_ceil(4 * count);
+  const std::size_t tableSize = std::bit_ceil(4 * boundary_.size());
   hashKeys_.assign(tableSize, ~std::uint64_t{0});
   hashValues_.resize(tableSize);
   created_.clear();
@@ -266,7 +257,7 @@ DelaunayTets::InsertResult DelaunayTets::insertVertex(std::uint32_t vertex, std:
       int m = 0;
       for (int k = 0; k < 4; ++k)
         if (k != g && k != n.face) e[m++] = n.v[k];
-      const std::uint64_t key = edgeKey(e[0], e[1]);
+      const std::uint64_t key = vertexPairKey(e[0], e[1]);
       std::size_t slot = (key * 0x9E3779B97F4A7C15ull) >> 20 & (tableSize - 1);
       while (hashKeys_[slot] != ~std::uint64_t{0} && hashKeys_[slot] != key)
         slot = (slot + 1) & (tableSize - 1);
@@ -283,13 +274,13 @@ DelaunayTets::InsertResult DelaunayTets::insertVertex(std::uint32_t vertex, std:
     }
   }
   last_ = created_.front();
-  return {Insertion::kInserted, last_};
+  return Insertion::kInserted;
 }
 
 void DelaunayTets::keepEdges(std::span<const std::array<std::uint32_t, 2>> edges) {
   keptVertex_.assign(points.size(), 0);
   for (const auto& e : edges) {
-    keptEdges_.push_back(edgeKey(e[0], e[1]));
+    keptEdges_.push_back(vertexPairKey(e[0], e[1]));
     keptVertex_[e[0]] = keptVertex_[e[1]] = 1;
   }
   std::sort(keptEdges_.begin(), keptEdges_.end());
@@ -299,7 +290,8 @@ std::vector<std::uint32_t> DelaunayTets::liveTetrahedra() const {
   std::vector<std::uint32_t> tets;
   tets.reserve(4 * tetCount());
   for (std::uint32_t t = 0; t < slotCount(); ++t)
-    if (alive(t)) tets.insert(tets.end(), &vertices[4 * std::size_t{t}], &vertices[4 * std::size_t{t} + 4]);
+    if (alive(t))
+      tets.insert(tets.end(), &vertices[4 * std::size_t{t}], &vertices[4 * std::size_t{t} + 4]);
   return tets;
 }
 
@@ -339,10 +331,10 @@ DelaunayTets DelaunayTets::fromTetrahedra(
     }
     if (j - i != 2 || isKept)
       for (std::size_t k = i; k < j; ++k)
-        mesh.flags[faces[k].second >> 2] |= static_cast<std::uint8_t>(1u << (faces[k].second & 3u));
+        mesh.flags[faces[k].second >> 2] |=
+            static_cast<std::uint8_t>(1u << (faces[k].second & 3u));
     i = j;
   }
-  mesh.last_ = 0;
   return mesh;
 }
 

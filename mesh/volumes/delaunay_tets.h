@@ -12,6 +12,11 @@ namespace geomesh {
 
 inline constexpr std::uint32_t kNoTet = 0xffffffffu;
 
+// One key for the edge between two vertices, whichever comes first.
+inline std::uint64_t vertexPairKey(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+}
+
 // Tetrahedra as flat arrays: 4 vertex indices and 4 neighbour links per tetrahedron, no heap
 // object per tetrahedron. Vertices (v0, v1, v2, v3) are positively oriented (orient3d > 0).
 // Face f is the face opposite vertex f; neighbours[4t + f] is 4n + g when face g of n is the
@@ -54,11 +59,6 @@ class DelaunayTets {
     kKeptEdge,    // the insertion would remove a kept edge
   };
 
-  struct InsertResult {
-    Insertion status;
-    std::uint32_t tet;  // a tetrahedron around the new vertex, or where the walk stopped
-  };
-
   // Locates the point by a visibility walk from `start` (an alive tetrahedron): the
   // tetrahedron that contains it, or kNoTet when the walk leaves the domain or crosses a
   // constrained face. `barycentric` receives its coordinates in that tetrahedron.
@@ -68,9 +68,9 @@ class DelaunayTets {
   // from the one containing it and stopped at constrained faces, replaced by the tetrahedra
   // joining p to its boundary. With minDistance > 0, a point nearer than that to a vertex of
   // the cavity is refused. On insertion the new vertex is points.size() - 1.
-  InsertResult insert(Vec3 p, std::uint32_t start, double minDistance = 0);
+  Insertion insert(Vec3 p, std::uint32_t start, double minDistance = 0);
   // The same for a vertex already in `points` (not yet in any tetrahedron).
-  InsertResult insertVertex(std::uint32_t v, std::uint32_t start, double minDistance = 0);
+  Insertion insertVertex(std::uint32_t v, std::uint32_t start, double minDistance = 0);
 
   // Marks the edges that insertion must keep (an edge whose every tetrahedron would fall in a
   // cavity is refused). Vertex pairs, any order.
@@ -83,7 +83,6 @@ class DelaunayTets {
 
   // The alive tetrahedra, 4 vertices each.
   std::vector<std::uint32_t> liveTetrahedra() const;
-
 
   // A tetrahedron created by the last successful insertion (or any alive one).
   std::uint32_t lastTet() const { return last_; }

@@ -33,29 +33,32 @@ Face faceKey(int a, int b, int c) {
   return f;
 }
 
-// Quality of a tetrahedron, -1 when it is flat or inverted (exact orientation test): gamma,
-// which the threshold is in, and the cubed mean ratio, which the changes are compared in
-// (it ranks tetrahedra much as gamma does, at a fraction of the cost).
+// Gamma of a tetrahedron, -1 when it is flat or inverted (exact orientation test): the
+// measure the threshold is in.
 double quality(const std::vector<Vec3>& xyz, const Tet& t) {
   const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
   if (orient3d(a, b, c, d) <= 0) return -1;
   return tetGamma(a, b, c, d);
 }
 
-// Whether a tetrahedron's gamma is below the threshold; its mean ratio settles most cases
-// without gamma (see TetOptimizer::gammaOf).
-bool gammaBelow(const std::vector<Vec3>& xyz, const Tet& t, double threshold) {
-  const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
-  if (threshold <= 0.6 && tetMeanRatioCubed(a, b, c, d) >= 0.8 * 0.8 * 0.8) return false;
-  return quality(xyz, t) < threshold;
-}
-
+// The cubed mean ratio, -1 when flat or inverted: the measure changes are compared in (it
+// ranks tetrahedra much as gamma does, at a fraction of the cost); the exact orientation test
+// only where the measure's sign is in doubt.
 double shape(const std::vector<Vec3>& xyz, const Tet& t) {
   const Vec3 a = xyz[t[0]], b = xyz[t[1]], c = xyz[t[2]], d = xyz[t[3]];
   const double measure = tetMeanRatioCubed(a, b, c, d);
   if (measure > kSureMeanRatioCubed) return measure;
   if (measure < -kSureMeanRatioCubed || orient3d(a, b, c, d) <= 0) return -1;
   return std::max(measure, 0.0);
+}
+
+// Gamma, needed only to compare with the threshold: a tetrahedron whose mean ratio is 0.8 or
+// more (`shapeOfT` its shape) has a gamma above 0.66 (sampled over many shapes), so below
+// thresholds up to 0.6 its gamma is not computed (1 stands for it).
+double gammaFor(const std::vector<Vec3>& xyz, const Tet& t, double shapeOfT, double threshold) {
+  constexpr double kGoodShape = 0.8 * 0.8 * 0.8;  // mean ratio 0.8, cubed
+  if (threshold <= 0.6 && shapeOfT >= kGoodShape) return 1;
+  return quality(xyz, t);
 }
 
 // A tetrahedral mesh being modified in place: dead tetrahedra stay as holes in the arrays, and
@@ -71,7 +74,6 @@ class TetOptimizer {
 
  private:
   int addTet(const Tet& t);
-  double gammaOf(const Tet& t, double shapeOfT) const;
   void removeTet(int t);
   bool improveTet(int t);
   bool removeEdge(int a, int b);
@@ -107,19 +109,10 @@ int TetOptimizer::addTet(const Tet& t) {
   const int index = static_cast<int>(tets_.size());
   tets_.push_back(t);
   shape_.push_back(shape(xyz_, t));
-  quality_.push_back(gammaOf(t, shape_.back()));
+  quality_.push_back(gammaFor(xyz_, t, shape_.back(), threshold_));
   alive_.push_back(1);
   for (int n : t) around_[n].push_back(index);
   return index;
-}
-
-// Gamma, needed only to compare with the threshold: a tetrahedron whose mean ratio is 0.8 or
-// more has a gamma above 0.66 (sampled over many shapes), so below thresholds up to 0.6 its
-// gamma is not computed (1 stands for it).
-double TetOptimizer::gammaOf(const Tet& t, double shapeOfT) const {
-  constexpr double kGoodShape = 0.8 * 0.8 * 0.8;  // mean ratio 0.8, cubed
-  if (threshold_ <= 0.6 && shapeOfT >= kGoodShape) return 1;
-  return quality(xyz_, t);
 }
 
 void TetOptimizer::removeTet(int t) {
@@ -317,7 +310,7 @@ bool TetOptimizer::smoothNode(int v) {
   xyz_[v] = at;
   for (int t : around_[v]) {
     shape_[t] = shape(xyz_, tets_[t]);
-    quality_[t] = gammaOf(tets_[t], shape_[t]);
+    quality_[t] = gammaFor(xyz_, tets_[t], shape_[t], threshold_);
   }
   ++stats_.nodeMoves;
   return true;
@@ -380,27 +373,29 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
   constexpr int kRounds = 3;
   TetOptimizerStats stats;
   for (int round = 0; round < kRounds; ++round) {
+    auto tetAt = [&](std::size_t i) {
+      return Tet{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
+    };
     std::vector<char> poor(points.size(), 0);
+    auto touchesPoor = [&](const Tet& t) {
+      return poor[t[0]] || poor[t[1]] || poor[t[2]] || poor[t[3]];
+    };
     for (std::size_t i = 0; i < tets.size(); i += 4) {
-      const Tet t{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
-      if (gammaBelow(points, t, threshold))
+      const Tet t = tetAt(i);
+      if (gammaFor(points, t, shape(points, t), threshold) < threshold)
         for (int n : t) poor[n] = 1;
     }
     // One ring more: the neighbours of the poor tetrahedra's vertices may move too.
-    {
-      std::vector<char> grown = poor;
-      for (std::size_t i = 0; i < tets.size(); i += 4) {
-        const Tet t{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
-        if (poor[t[0]] || poor[t[1]] || poor[t[2]] || poor[t[3]])
-          for (int n : t) grown[n] = 1;
-      }
-      poor.swap(grown);
-    }
+    std::vector<char> grown = poor;
+    for (std::size_t i = 0; i < tets.size(); i += 4)
+      if (const Tet t = tetAt(i); touchesPoor(t))
+        for (int n : t) grown[n] = 1;
+    poor.swap(grown);
     std::vector<Tet> region;
     std::vector<std::uint32_t> rest;
     for (std::size_t i = 0; i < tets.size(); i += 4) {
-      const Tet t{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
-      if (poor[t[0]] || poor[t[1]] || poor[t[2]] || poor[t[3]])
+      const Tet t = tetAt(i);
+      if (touchesPoor(t))
         region.push_back(t);
       else
         rest.insert(rest.end(), tets.begin() + std::ptrdiff_t(i),

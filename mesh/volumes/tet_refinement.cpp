@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "mesh/core/predicates.h"
 #include "mesh/core/quality.h"
 #include "mesh/core/spatial_sort.h"
 
@@ -108,6 +107,18 @@ bool circumsphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3& centre, double& radius2)
   return std::isfinite(radius2);
 }
 
+// The size wanted at p, in the tetrahedron with vertices v at the barycentric weights: the
+// vertices' sizes interpolated, bounded by the field's (or the field's alone when sizes do not
+// extend from the boundary).
+double sizeAt(const RefinementSizes& sizes, Vec3 p, const std::uint32_t* v,
+              const double* weights) {
+  double interpolated = 0;
+  for (int k = 0; k < 4; ++k) interpolated += weights[k] * sizes.atVertex[v[k]];
+  if (!sizes.field) return interpolated;
+  const double field = sizes.field(p);
+  return sizes.extendFromBoundary ? std::min(interpolated, field) : field;
+}
+
 // A tetrahedron on a kept face (the boundary, mostly) is poor when its fourth vertex stands
 // badly over the face, which moving that vertex often cannot fix (it is a boundary node, or
 // held by its other tetrahedra). The point where a regular tetrahedron on the face would have
@@ -117,30 +128,29 @@ std::size_t standOnPoorBoundaryFaces(DelaunayTets& mesh, RefinementSizes& sizes)
   std::vector<std::pair<std::uint32_t, int>> poor;
   for (std::uint32_t t = 0; t < mesh.slotCount(); ++t) {
     if (!mesh.alive(t)) continue;
+    int kept = 0;
+    while (kept < 4 && !mesh.constrained(t, kept)) ++kept;
+    if (kept == 4) continue;
     const std::uint32_t* v = &mesh.vertices[4 * std::size_t{t}];
-    for (int f = 0; f < 4; ++f)
-      if (mesh.constrained(t, f) &&
-          tetGamma(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]) <
-              kPoor) {
-        poor.push_back({t, f});
-        break;
-      }
+    if (tetGamma(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]) <
+        kPoor)
+      poor.push_back({t, kept});
   }
   std::size_t inserted = 0;
   for (const auto& [t, f] : poor) {
     if (!mesh.alive(t)) continue;
     const std::uint32_t* v = &mesh.vertices[4 * std::size_t{t}];
     const int* face = DelaunayTets::kFace[f];
-    const Vec3 a = mesh.points[v[face[0]]], b = mesh.points[v[face[1]]], c = mesh.points[v[face[2]]];
+    const Vec3 a = mesh.points[v[face[0]]], b = mesh.points[v[face[1]]],
+               c = mesh.points[v[face[2]]];
     const double edge = (norm(b - a) + norm(c - b) + norm(a - c)) / 3;
     const Vec3 normal = normalized(cross(b - a, c - a));  // towards the tetrahedron
     const Vec3 apex = (a + b + c) / 3 + std::sqrt(2.0 / 3.0) * edge * normal;
     double weights[4];
     const std::uint32_t where = mesh.locate(apex, t, weights);
     if (where == kNoTet) continue;
-    double size = 0;
-    for (int k = 0; k < 4; ++k) size += weights[k] * sizes.atVertex[mesh.vertices[4 * std::size_t{where} + k]];
-    if (mesh.insert(apex, where, 0.5 * edge).status != DelaunayTets::Insertion::kInserted) continue;
+    const double size = sizeAt(sizes, apex, &mesh.vertices[4 * std::size_t{where}], weights);
+    if (mesh.insert(apex, where, 0.5 * edge) != DelaunayTets::Insertion::kInserted) continue;
     sizes.atVertex.push_back(size);
     ++inserted;
   }
@@ -207,15 +217,6 @@ class Refinement {
     candidates_.resize(kept);
   }
 
-  // The size wanted at p, in the tetrahedron with vertices v at the barycentric weights.
-  double sizeAt(Vec3 p, const std::uint32_t* v, const double* weights) const {
-    double interpolated = 0;
-    for (int k = 0; k < 4; ++k) interpolated += weights[k] * sizes_.atVertex[v[k]];
-    if (!sizes_.field) return interpolated;
-    const double field = sizes_.field(p);
-    return sizes_.extendFromBoundary ? std::min(interpolated, field) : field;
-  }
-
   // Inserts the candidates along the Hilbert curve; the tetrahedra made go to `made`.
   std::size_t insertCandidates(std::vector<std::uint32_t>& made) {
     places_.clear();
@@ -239,14 +240,14 @@ class Refinement {
         where = c.tet;
         std::fill(weights, weights + 4, 0.25);
       }
-      const double size = sizeAt(p, &mesh_.vertices[4 * std::size_t{where}], weights);
-      const auto result = mesh_.insert(p, where, kSpacing * size);
-      if (result.status == DelaunayTets::Insertion::kInserted) {
+      const double size = sizeAt(sizes_, p, &mesh_.vertices[4 * std::size_t{where}], weights);
+      const DelaunayTets::Insertion result = mesh_.insert(p, where, kSpacing * size);
+      if (result == DelaunayTets::Insertion::kInserted) {
         sizes_.atVertex.push_back(size);
         const auto created = mesh_.created();
         made.insert(made.end(), created.begin(), created.end());
         ++inserted;
-      } else if (result.status == DelaunayTets::Insertion::kTooClose) {
+      } else if (result == DelaunayTets::Insertion::kTooClose) {
         ++stats_.refusedTooClose;
       } else {
         ++stats_.refusedOther;

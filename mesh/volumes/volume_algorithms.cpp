@@ -8,12 +8,13 @@ namespace {
 
 constexpr int kDelaunay = 1;
 
-// Adding a 3D algorithm: a file with its function (meshing one volume from the triangles of
-// its boundary, as meshVolume does), then one row here: its Mesh.Algorithm3D code (rows stay
-// sorted by code), its -algo name (and an alias or null), the title messages use, the
-// function, and the code to fall back on if the function is null. Frontal and HXT scripts get
-// the Delaunay mesher (refinement in rounds of Hilbert-sorted points, as HXT does): the same
-// sizes and a quality at least theirs, without a warning.
+// A row: its Mesh.Algorithm3D code (rows stay sorted by code), its -algo name (and an alias
+// or null), the title messages use, the function that meshes one volume (null: not available)
+// and the code to fall back on then. generateMesh meshes every volume by meshVolume's two
+// halves (planVolumeMesh on several threads, then commitVolumeMesh): a different function here
+// would need that split too. Frontal and HXT scripts get the Delaunay mesher (refinement in
+// rounds of Hilbert-sorted points, as HXT does): the same sizes and a quality at least theirs,
+// without a warning.
 constexpr VolumeAlgorithm kRows[] = {
     {1, "del3d", nullptr, "Delaunay", meshVolume, kDelaunay},
     {3, "initial3d", nullptr, "Initial mesh only", nullptr, kDelaunay},

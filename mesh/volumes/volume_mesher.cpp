@@ -208,8 +208,8 @@ DelaunayTets kernelMesh(const VolumePlc& plc, const tetgenio& out, std::vector<d
   std::vector<std::uint32_t> tets(out.tetrahedronlist,
                                   out.tetrahedronlist + 4 * std::size_t(out.numberoftetrahedra));
   for (std::size_t t = 0; t < tets.size(); t += 4)
-    if (orient3d(points[tets[t]], points[tets[t + 1]], points[tets[t + 2]],
-                     points[tets[t + 3]]) < 0)
+    if (orient3d(points[tets[t]], points[tets[t + 1]], points[tets[t + 2]], points[tets[t + 3]]) <
+        0)
       std::swap(tets[t], tets[t + 1]);
   const std::size_t known = plc.nodes.size();
   std::vector<double> sum(points.size(), 0), count(points.size(), 0);
@@ -225,17 +225,7 @@ DelaunayTets kernelMesh(const VolumePlc& plc, const tetgenio& out, std::vector<d
   for (double h : sizes) largest = std::max(largest, h);
   for (std::size_t i = known; i < points.size(); ++i)
     sizes.push_back(count[i] > 0 ? sum[i] / count[i] : largest);
-  std::vector<std::array<std::uint32_t, 3>> kept;
-  for (std::size_t t = plc.shellEnd; t < plc.triangles.size(); ++t) {
-    const PlcTriangle& c = plc.triangles[t];
-    kept.push_back({std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])});
-  }
-  DelaunayTets mesh = DelaunayTets::fromTetrahedra(std::move(points), std::move(tets), kept);
-  std::vector<std::array<std::uint32_t, 2>> segments;
-  for (const PlcSegment& s : plc.segments)
-    segments.push_back({std::uint32_t(s[0]), std::uint32_t(s[1])});
-  if (!segments.empty()) mesh.keepEdges(segments);
-  return mesh;
+  return complexTetrahedra(plc, std::move(points), std::move(tets));
 }
 
 // The tetrahedra of the complex's nodes with its triangles and segments as faces and edges:
@@ -272,15 +262,10 @@ void optimizeTetrahedra(const VolumePlc& plc, const MeshOptions& options,
                         std::vector<std::uint32_t>& tets) {
   std::vector<char> movable(points.size(), 0);
   std::fill(movable.begin() + firstInterior, movable.end(), 1);
-  std::vector<std::array<std::uint32_t, 3>> keptFaces;
-  for (const PlcTriangle& t : plc.triangles)
-    keptFaces.push_back({std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
-  std::vector<std::array<std::uint32_t, 2>> keptSegments;
-  for (const PlcSegment& s : plc.segments)
-    keptSegments.push_back({std::uint32_t(s[0]), std::uint32_t(s[1])});
   const double threshold =
       options.optimize ? std::max(options.optimizeThreshold, kOptimizeBelowAtLeast) : kFlatBelow;
-  optimizeTetrahedra(points, std::move(movable), tets, threshold, keptFaces, keptSegments);
+  optimizeTetrahedra(points, std::move(movable), tets, threshold, plcTriangles(plc),
+                     plcSegments(plc));
 }
 
 // Adds the volume's new points (those after the complex's nodes) to the mesh, and its

@@ -211,6 +211,22 @@ std::vector<double> plcNodeSizes(const VolumePlc& plc, const std::vector<Vec3>& 
   return size;
 }
 
+std::vector<std::array<std::uint32_t, 3>> plcTriangles(const VolumePlc& plc, std::size_t first) {
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (std::size_t t = first; t < plc.triangles.size(); ++t) {
+    const PlcTriangle& c = plc.triangles[t];
+    triangles.push_back({std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])});
+  }
+  return triangles;
+}
+
+std::vector<std::array<std::uint32_t, 2>> plcSegments(const VolumePlc& plc) {
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  for (const PlcSegment& s : plc.segments)
+    segments.push_back({std::uint32_t(s[0]), std::uint32_t(s[1])});
+  return segments;
+}
+
 void renumberPlc(VolumePlc& plc, std::vector<Vec3>& xyz, std::vector<double>& sizes,
                  std::size_t start) {
   const std::size_t n = plc.nodes.size();

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "kernel/model.h"
@@ -53,6 +54,12 @@ VolumePlc collectVolumePlc(const Model& model, const ModelVolume& volume, const 
 // the tetrahedra around those unrefined.
 std::vector<double> plcNodeSizes(const VolumePlc& plc, const std::vector<Vec3>& xyz,
                                  const MeshOptions& options);
+
+// The complex's triangles from `first` on (all by default; plc.shellEnd for the embedded
+// surfaces'), and its segments, as unsigned local indices: the form the Delaunay kernel and
+// the optimizer take.
+std::vector<std::array<std::uint32_t, 3>> plcTriangles(const VolumePlc& plc, std::size_t first = 0);
+std::vector<std::array<std::uint32_t, 2>> plcSegments(const VolumePlc& plc);
 
 // Renumbers the complex's nodes by i -> i * stride mod n, with the stride the first integer
 // from `start` coprime with n, so that TetGen meets the points in another order; `xyz` and

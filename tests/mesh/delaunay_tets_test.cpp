@@ -112,8 +112,7 @@ TEST(DelaunayTets, ConstrainedFacesAreNeitherCrossedNorRemoved) {
   EXPECT_EQ(mesh.locate({0.1, 0.1, 0.1}, 1), kNoTet);  // behind the kept face: not crossed
   EXPECT_EQ(mesh.locate({0.1, 0.1, 0.1}, 0), 0u);
   EXPECT_EQ(mesh.locate({-1, -1, -1}, 0), kNoTet);
-  const auto result = mesh.insert({0.3, 0.3, 0.3}, 0);
-  ASSERT_EQ(result.status, DelaunayTets::Insertion::kInserted);
+  ASSERT_EQ(mesh.insert({0.3, 0.3, 0.3}, 0), DelaunayTets::Insertion::kInserted);
   expectValidDelaunay(mesh, false);
   // The kept face is still there, as a face of tetrahedra on both sides.
   int keptHalves = 0;
@@ -131,7 +130,7 @@ TEST(DelaunayTets, ConstrainedFacesAreNeitherCrossedNorRemoved) {
   EXPECT_EQ(keptHalves, 2);
   EXPECT_NEAR(testing::volumeOf(mesh), 1 / 6.0 + 1 / 3.0, 1e-12);
   // A point nearer than the distance asked to a vertex of its cavity is refused.
-  EXPECT_EQ(mesh.insert({0.05, 0.05, 0.05}, mesh.lastTet(), 0.2).status,
+  EXPECT_EQ(mesh.insert({0.05, 0.05, 0.05}, mesh.lastTet(), 0.2),
             DelaunayTets::Insertion::kTooClose);
 }
 
@@ -144,7 +143,7 @@ TEST(DelaunayTets, KeptEdgesSurviveInsertion) {
   const std::array<std::uint32_t, 2> kept{mesh.vertices[4 * t], mesh.vertices[4 * t + 1]};
   mesh.keepEdges(std::span(&kept, 1));
   const Vec3 middle = (mesh.points[kept[0]] + mesh.points[kept[1]]) / 2;
-  EXPECT_EQ(mesh.insert(middle, mesh.lastTet()).status, DelaunayTets::Insertion::kKeptEdge);
+  EXPECT_EQ(mesh.insert(middle, mesh.lastTet()), DelaunayTets::Insertion::kKeptEdge);
   expectValidDelaunay(mesh, true);
 }
 

@@ -120,6 +120,13 @@ void expectConforming(const DelaunayTets& mesh, const VolumePlc& plc) {
   }
 }
 
+// The same size at every node of the complex.
+RefinementSizes uniformSizes(const CubeComplex& c, double size) {
+  RefinementSizes sizes;
+  sizes.atVertex.assign(c.xyz.size(), size);
+  return sizes;
+}
+
 double meanEdge(const DelaunayTets& mesh, std::uint32_t firstInterior) {
   double sum = 0;
   int count = 0;
@@ -173,8 +180,7 @@ TEST(TetRefinement, UniformSizeIsFollowedInsideTheCube) {
   const CubeComplex c = cubeComplex(5);
   auto mesh = boundaryDelaunay(c.plc, c.xyz, {});
   ASSERT_TRUE(mesh);
-  RefinementSizes sizes;
-  sizes.atVertex.assign(c.xyz.size(), 0.2);
+  RefinementSizes sizes = uniformSizes(c, 0.2);
   const RefinementStats stats = refineToSizes(*mesh, sizes);
   EXPECT_GT(stats.inserted, 20u);
   EXPECT_EQ(sizes.atVertex.size(), mesh->points.size());
@@ -192,8 +198,7 @@ TEST(TetRefinement, FieldMakesOneHalfFiner) {
   const CubeComplex c = cubeComplex(4);
   auto mesh = boundaryDelaunay(c.plc, c.xyz, {});
   ASSERT_TRUE(mesh);
-  RefinementSizes sizes;
-  sizes.atVertex.assign(c.xyz.size(), 0.25);
+  RefinementSizes sizes = uniformSizes(c, 0.25);
   sizes.field = [](Vec3 p) { return p.x < 0.5 ? 0.08 : 0.25; };
   refineToSizes(*mesh, sizes);
   expectConforming(*mesh, c.plc);
@@ -204,8 +209,7 @@ TEST(TetRefinement, FieldMakesOneHalfFiner) {
   // Without extension from the boundary, the field alone sets the sizes: the coarse half gets
   // its points too.
   auto alone = boundaryDelaunay(c.plc, c.xyz, {});
-  RefinementSizes fieldOnly;
-  fieldOnly.atVertex.assign(c.xyz.size(), 1.0);
+  RefinementSizes fieldOnly = uniformSizes(c, 1.0);
   fieldOnly.field = [](Vec3) { return 0.15; };
   fieldOnly.extendFromBoundary = false;
   refineToSizes(*alone, fieldOnly);
@@ -216,9 +220,7 @@ TEST(TetRefinement, Deterministic) {
   const CubeComplex c = cubeComplex(4);
   auto first = boundaryDelaunay(c.plc, c.xyz, {}), second = boundaryDelaunay(c.plc, c.xyz, {});
   ASSERT_TRUE(first && second);
-  RefinementSizes a, b;
-  a.atVertex.assign(c.xyz.size(), 0.15);
-  b.atVertex = a.atVertex;
+  RefinementSizes a = uniformSizes(c, 0.15), b = a;
   refineToSizes(*first, a);
   refineToSizes(*second, b);
   expectConforming(*first, c.plc);
@@ -233,8 +235,7 @@ TEST(VolumeEstimate, CountsAreNearTheMeshedOnesAndTooManyAreRefused) {
   const CubeComplex c = cubeComplex(5);
   auto mesh = boundaryDelaunay(c.plc, c.xyz, {});
   ASSERT_TRUE(mesh);
-  RefinementSizes sizes;
-  sizes.atVertex.assign(c.xyz.size(), 0.2);
+  RefinementSizes sizes = uniformSizes(c, 0.2);
   // The cube's faces have edges of about 0.2 and more (diagonals; the points are moved a
   // little in their faces): within options.sizeMax = 0.2, the estimate takes about 0.2.
   MeshOptions options;

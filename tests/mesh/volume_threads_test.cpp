@@ -8,15 +8,10 @@
 #include "io/msh_writer.h"
 #include "kernel/geo/geo_factory.h"
 #include "mesh/pipeline/generate.h"
+#include "mesh_measures.h"
 
 namespace geomesh {
 namespace {
-
-class QuietSink final : public MessageSink {
- public:
-  void info(std::string_view) override {}
-  void warning(std::string_view) override {}
-};
 
 // Three unit cubes side by side with gaps, three volumes, meshed at size h.
 Model threeCubes(double h) {
@@ -52,7 +47,7 @@ std::string meshed(const Model& model, int threads) {
   MeshOptions options;
   options.numThreads = threads;
   Mesh mesh;
-  QuietSink log;
+  testing::QuietSink log;
   generateMesh(model, options, 3, mesh, log);
   std::ostringstream out;
   writeMsh(out, model, mesh, {});
