@@ -373,6 +373,12 @@ block_item:
 | words bare ';' {  // Recombine 1; inside an extrusion
     $$ = makeExpr(ExprKind::Shape, @1); $$->words = std::move($1);
     $$->args.push_back(std::move($2)); }
+| TAILWORD IDENT '[' expr ']' ';' {  // Using Index[1]; inside an extrusion along normals
+    $$ = makeExpr(ExprKind::Shape, @1); $$->words = {std::move($1), std::move($2)};
+    $$->args.push_back(std::move($4)); }
+| TAILWORD WORD '[' expr ']' ';' {  // Using View[0];
+    $$ = makeExpr(ExprKind::Shape, @1); $$->words = {std::move($1), std::move($2)};
+    $$->args.push_back(std::move($4)); }
 ;
 
 control:

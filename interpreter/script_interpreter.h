@@ -194,6 +194,7 @@ class Interpreter {
   std::vector<double> shapeArguments(const ast::Expr& shape);
   AffineMap transformMap(const ast::Expr& shape);
   ExtrusionLayers extrusionLayers(const ast::ShapePart& block);
+  int layerIndex(const ast::ShapePart& block);
   std::vector<EntityId> extrude(const ast::Expr& shape);
   std::optional<std::vector<EntityId>> shapeOperation(const ast::Expr& shape);
   void executeShapeOperation(const ast::CommandStmt& command, const SourceLocation& where);
@@ -255,6 +256,7 @@ class Interpreter {
   void setSurfaceAlgorithm(const ast::CommandStmt& command, const SourceLocation& where);
   void defineField(const ast::CommandStmt& command, const SourceLocation& where);
   void setBackgroundField(const ast::CommandStmt& command, const SourceLocation& where);
+  void addBoundaryLayerField(const ast::CommandStmt& command, const SourceLocation& where);
   bool executeFieldOption(const ast::OptionAssignStmt& assign, const SourceLocation& where);
 
   // parameters (DefineConstant, DefineNumber, DefineString)

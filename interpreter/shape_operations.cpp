@@ -62,7 +62,8 @@ std::vector<EntityId> Interpreter::shapesIn(const ast::ShapePart& block) {
       for (int tag : shapeTags(*item, dim)) shapes.push_back(EntityId{dim, tag});
     } else if (auto produced = shapeOperation(*item)) {
       shapes.insert(shapes.end(), produced->begin(), produced->end());
-    } else if (item->words != Words{"Layers"} && item->words != Words{"Recombine"}) {
+    } else if (item->words != Words{"Layers"} && item->words != Words{"Recombine"} &&
+               (item->words.empty() || item->words[0] != "Using")) {
       warn(item->loc, "'" + (item->words.empty() ? std::string("?") : item->words[0]) +
                           "' is not supported here; ignored");
     }
@@ -106,6 +107,22 @@ AffineMap Interpreter::transformMap(const ast::Expr& shape) {
   return map;
 }
 
+// Using Index[i] in an extrusion along normals: layers of one index share their normals.
+int Interpreter::layerIndex(const ast::ShapePart& block) {
+  int index = 0;
+  for (const auto& item : block.items) {
+    if (item->words.size() != 2 || item->words[0] != "Using" || item->args.empty()) continue;
+    if (item->words[1] == "Index") {
+      index = clampedInteger<int>(evaluateNumber(*item->args[0]));
+      if (index < 0) fail(item->loc, "Using Index takes a number from 0");
+    } else {
+      warn(item->loc, "'Using " + item->words[1] +
+                          "' is not supported in an extrusion along normals; ignored");
+    }
+  }
+  return index;
+}
+
 ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
   ExtrusionLayers layers;
   for (const auto& item : block.items) {
@@ -130,7 +147,9 @@ ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
 std::vector<EntityId> Interpreter::extrude(const ast::Expr& shape) {
   const std::vector<double> v = shapeArguments(shape);
   ExtrusionMotion motion;
-  if (v.size() == 3)
+  if (shape.parts.size() == 1)  // Extrude{ shapes; Layers{..}; }: a boundary layer
+    motion = ExtrusionMotion::normals(layerIndex(shape.parts[0]));
+  else if (v.size() == 3)
     motion = ExtrusionMotion::translate({v[0], v[1], v[2]});
   else if (v.size() == 7)
     motion = ExtrusionMotion::rotate({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]);
@@ -172,6 +191,8 @@ std::optional<std::vector<EntityId>> Interpreter::shapeOperation(const ast::Expr
       return shapes;
     }
     if (kind == "Extrude" && shape.parts.size() == 2) return extrude(shape);
+    if (kind == "Extrude" && shape.parts.size() == 1 && shape.parts[0].isBlock)
+      return extrude(shape);
     if (auto made = solidOperation(shape)) return made;
   } catch (const GeometryError& error) {
     fail(shape.loc, error.what());

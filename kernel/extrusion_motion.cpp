@@ -18,18 +18,20 @@ Vec3 turn(Vec3 v, Vec3 u, double angle) {
 }  // namespace
 
 Vec3 ExtrusionMotion::rotateVector(Vec3 v, double s) const {
-  if (kind == Kind::Translation) return v;
+  if (kind == Kind::Translation || kind == Kind::Normals) return v;
   return turn(v, normalized(axis), s * angle);
 }
 
 // Points turn by the matrix of AffineMap::rotation, so that they round as transformed points.
 Vec3 ExtrusionMotion::apply(Vec3 p, double s) const {
+  if (kind == Kind::Normals) return p;  // the mesh moves, along normals only it knows
   if (kind == Kind::Translation) return p + s * translation;
   const Vec3 turned = AffineMap::rotation(axis, axisPoint, s * angle).apply(p);
   return kind == Kind::Twist ? turned + s * translation : turned;
 }
 
 Vec3 ExtrusionMotion::velocity(Vec3 p, double s) const {
+  if (kind == Kind::Normals) return {};
   if (kind == Kind::Translation) return translation;
   const Vec3 u = normalized(axis);
   const Vec3 spin = angle * cross(u, rotateVector(p - axisPoint, s));

@@ -1,4 +1,4 @@
-// ExtrusionMotion: the rigid motions of an extrusion's sweep: translation, rotation or twist.
+// ExtrusionMotion: the motions of an extrusion's sweep: translation, rotation, twist, normals.
 #pragma once
 
 #include "kernel/vec3.h"
@@ -7,13 +7,17 @@ namespace geomesh {
 
 // The sweep of an extrusion, as a family of rigid motions M_s, s in [0, 1] (M_0 = identity):
 // a translation by s d, a rotation by s angle about an axis, or both at once (a twist).
+// Normals is a boundary layer (Extrude without a vector): the geometry stays where it is and
+// the mesh grows along the normals of the mesh of every source extruded with the same index
+// (Using Index[i]); the heights of its Layers are lengths, not fractions.
 struct ExtrusionMotion {
-  enum class Kind { Translation, Rotation, Twist };
+  enum class Kind { Translation, Rotation, Twist, Normals };
   Kind kind = Kind::Translation;
   Vec3 translation;         // Translation, Twist
   Vec3 axis{0, 0, 1};       // Rotation, Twist: direction of the axis
   Vec3 axisPoint;           // a point of the axis
   double angle = 0;         // radians, right-hand rule about `axis`
+  int layerIndex = 0;       // Normals: the i of Using Index[i]
 
   static ExtrusionMotion translate(Vec3 d) { return {Kind::Translation, d, {0, 0, 1}, {}, 0}; }
   static ExtrusionMotion rotate(Vec3 axis, Vec3 point, double angle) {
@@ -21,6 +25,9 @@ struct ExtrusionMotion {
   }
   static ExtrusionMotion twist(Vec3 d, Vec3 axis, Vec3 point, double angle) {
     return {Kind::Twist, d, axis, point, angle};
+  }
+  static ExtrusionMotion normals(int index) {
+    return {Kind::Normals, {}, {0, 0, 1}, {}, 0, index};
   }
 
   // M_s(p), and its derivatives with respect to s and (applied to a vector) to p.

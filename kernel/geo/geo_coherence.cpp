@@ -128,14 +128,38 @@ void GeoFactory::mergePoints() {
   PointGrid grid(absoluteTolerance());
   std::map<int, int> replacement;
   for (const auto& [tag, point] : points_) {
+    if (layerPoints_.contains(tag)) continue;
     if (const int twin = grid.twinOf(point.xyz))
       replacement[tag] = twin;
     else
       grid.keep(tag, point.xyz);
   }
-  if (replacement.empty()) return;
   for (const auto& [from, to] : replacement) points_.erase(from);
-  replaceTags(0, replacement);
+  if (!replacement.empty()) replaceTags(0, replacement);
+  mergeLayerPoints(replacement);
+}
+
+// The points of boundary layers from the same source point and index are one point.
+void GeoFactory::mergeLayerPoints(const std::map<int, int>& merged) {
+  std::map<int, int> replacement;
+  std::map<std::pair<int, int>, int> first;
+  for (auto it = layerPoints_.begin(); it != layerPoints_.end();) {
+    if (!points_.contains(it->first)) {
+      it = layerPoints_.erase(it);
+      continue;
+    }
+    if (const auto m = merged.find(it->second.first); m != merged.end())
+      it->second.first = m->second;
+    const auto [kept, added] = first.try_emplace(it->second, it->first);
+    if (!added) {
+      replacement[it->first] = kept->second;
+      points_.erase(it->first);
+      it = layerPoints_.erase(it);
+      continue;
+    }
+    ++it;
+  }
+  if (!replacement.empty()) replaceTags(0, replacement);
 }
 
 // Curves of one kind through the same points (in either direction) are the same curve. They

@@ -43,7 +43,16 @@ std::vector<EntityId> GeoFactory::extrude(const std::vector<EntityId>& shapes,
                                           const ExtrusionMotion& motion,
                                           const ExtrusionLayers& layers) {
   for (EntityId shape : shapes) requireShape(shape, "Extrude");
-  checkMotion(motion);
+  const bool layer = motion.kind == ExtrusionMotion::Kind::Normals;
+  if (!layer) checkMotion(motion);
+  if (layer && layers.elements.empty())
+    fail("Extrude along normals (a boundary layer) needs Layers{..}");
+  // The copies a boundary layer makes are its own points (see layerPoints_).
+  struct LayerScope {
+    int& index;
+    ~LayerScope() { index = -1; }
+  } scope{layerCopyIndex_};
+  layerCopyIndex_ = layer ? motion.layerIndex : -1;
   std::vector<EntityId> out;
   for (EntityId shape : shapes) {
     const int tag = std::abs(shape.tag);
@@ -68,10 +77,12 @@ std::vector<EntityId> GeoFactory::extrudePoint(int tag, const ExtrusionMotion& m
     const int moved = newPointTag();
     points_[moved] = ModelPoint{moved, motion.apply(source.xyz, s), source.meshSize};
     bounds_.include(points_[moved].xyz);
+    if (layerCopyIndex_ >= 0) layerPoints_[moved] = {tag, layerCopyIndex_};
     return moved;
   };
   Curve curve{0};
-  if (motion.kind == ExtrusionMotion::Kind::Translation) {
+  if (motion.kind == ExtrusionMotion::Kind::Translation ||
+      motion.kind == ExtrusionMotion::Kind::Normals) {
     curve = Curve{0, CurveKind::Line, {tag, addMoved(1)}};
   } else if (motion.kind == ExtrusionMotion::Kind::Rotation) {
     if (std::abs(motion.angle) >= std::acos(-1.0))
@@ -148,6 +159,7 @@ std::vector<EntityId> GeoFactory::extrudeSurface(int tag, const ExtrusionMotion&
   Surface top = surfaces_.at(firstTop);
   surfaces_.erase(firstTop);
   top.tag = newRegionTag(2);
+  if (motion.kind == ExtrusionMotion::Kind::Normals) top.sweep = motion;  // see surfaceGeometry
   surfaces_[top.tag] = top;
   Volume volume{newVolumeTag(), {{tag, top.tag}}};
   for (EntityId s : laterals) volume.shells.front().push_back(s.tag);

@@ -227,6 +227,11 @@ class GeoFactory final : public GeometryFactory {
   // Replacements made by Coherence since lastMerges_ was last cleared, per dimension (signed).
   std::array<std::map<int, int>, 4> lastMerges_;
   BoundingBox bounds_;  // of the points, kept as they are added
+  // The points a boundary layer (an extrusion along normals) made: they stand where their
+  // source does, so Coherence merges them only with the points made from the same source
+  // point for the same index, never with the source. {source point, index} per point.
+  std::map<int, std::pair<int, int>> layerPoints_;
+  int layerCopyIndex_ = -1;  // while a boundary layer copies points: its index
 
   double absoluteTolerance() const;
   void noteTag(int kind, int tag);
@@ -269,6 +274,7 @@ class GeoFactory final : public GeometryFactory {
   void replaceTags(int dim, const std::map<int, int>& signedReplacement);
   void resetHighWater();
   // geo_extrude.cpp
+  void mergeLayerPoints(const std::map<int, int>& merged);
   std::vector<EntityId> extrudePoint(int tag, const ExtrusionMotion& motion,
                                      const ExtrusionLayers& layers);
   std::vector<EntityId> extrudeCurve(int tag, const ExtrusionMotion& motion,

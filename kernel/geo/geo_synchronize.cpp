@@ -111,6 +111,8 @@ std::optional<std::pair<Vec3, double>> commonSphere(
 }  // namespace
 
 std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
+  // The sides and top of a boundary layer are where its mesh puts them: no geometry of theirs.
+  if (s.sweep && s.sweep->kind == ExtrusionMotion::Kind::Normals) return nullptr;
   if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops).first;
   const std::vector<int>& loop = s.loops.front();
   if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion) {

@@ -118,6 +118,7 @@ int GeoFactory::copyPoint(int tag) {
   ModelPoint point = points_.at(tag);
   point.tag = copy;
   points_[copy] = point;
+  if (layerCopyIndex_ >= 0) layerPoints_[copy] = {tag, layerCopyIndex_};
   return copy;
 }
 

@@ -62,6 +62,9 @@ struct Sweep {
 };
 
 void requireSweepable(const ExtrusionMotion& motion) {
+  if (motion.kind == ExtrusionMotion::Kind::Normals)
+    throw GeometryError("Extrude along normals (a boundary layer) is made by the built-in "
+                        "kernel only: SetFactory(\"Built-in\") before it");
   if (motion.kind == ExtrusionMotion::Kind::Twist)
     throw GeometryError("Extrude: a twisted extrusion is not supported by the OpenCASCADE factory");
   if (motion.kind == ExtrusionMotion::Kind::Translation && norm(motion.translation) == 0)

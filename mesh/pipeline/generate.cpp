@@ -64,15 +64,20 @@ void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fi
   }
 }
 
-// Curves in meshingOrder: sweeps and copies after what they copy.
+// Curves in meshingOrder: sweeps and copies after what they copy. The curves of boundary
+// layers grown from surfaces wait for them (`layers`: those alone, else all the others).
 void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fields,
-                Mesh& mesh) {
+                Mesh& mesh, bool layers = false) {
   const std::map<int, Periodicity> links = periodicCurves(model);
   const ExtrusionMesher extruded(model);
   const PeriodicCopier periodic(model);
+  std::vector<int> followers;  // curves that end where a boundary layer moves their ends
   for (const PlannedEntity& p : meshingOrder(model, 1, links)) {
     const EntityId id{1, p.tag};
-    if (p.method == MeshingMethod::Own)
+    if (extruded.waitsForSurfaces(id) != layers) continue;
+    if (p.method == MeshingMethod::Own && extruded.touchesLayer(id))
+      followers.push_back(p.tag);
+    else if (p.method == MeshingMethod::Own)
       meshCurve(model, *model.curve(p.tag), rules, mesh, &fields);
     else if (p.method == MeshingMethod::Swept)
       extruded.meshSwept(id, mesh);
@@ -81,7 +86,11 @@ void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fi
     else
       periodic.copyCurve(p.tag, links.at(p.tag), mesh);
   }
-  periodic.linkEndPoints(links, mesh);
+  for (int tag : followers) {
+    meshCurve(model, *model.curve(tag), rules, mesh, &fields);
+    extruded.followLayerEnds({1, tag}, mesh);
+  }
+  if (!layers) periodic.linkEndPoints(links, mesh);
 }
 
 // Recombine Surface{t} = angle, else Mesh.RecombineAll with the default angle; nullopt: none.
@@ -201,7 +210,9 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
                 " is not available; elements are not split");
   const ExtrusionMesher extruded(model);
   const PeriodicCopier periodic(model);
-  for (const PlannedEntity& p : meshingOrder(model, 2, {})) {
+  // Boundary layers grown from surfaces (their curves too) come once those surfaces are meshed.
+  std::vector<PlannedEntity> layers;
+  auto meshPlanned = [&](const PlannedEntity& p) {
     const EntityId id{2, p.tag};
     if (p.method == MeshingMethod::Own)
       meshOneSurface(stage, *model.surface(p.tag), mesh);
@@ -211,6 +222,16 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
       extruded.meshImage(id, mesh);
     else
       periodic.copySurface(p.tag, mesh);
+  };
+  for (const PlannedEntity& p : meshingOrder(model, 2, {})) {
+    if (extruded.waitsForSurfaces({2, p.tag}))
+      layers.push_back(p);
+    else
+      meshPlanned(p);
+  }
+  if (!layers.empty()) {
+    meshCurves(model, stage.rules, stage.fields, mesh, true);
+    for (const PlannedEntity& p : layers) meshPlanned(p);
   }
   mesh.dropUnheldNodes();  // the nodes recombination took out
   const MeshCheckReport report = checkMesh(model, mesh);

@@ -43,6 +43,28 @@ std::vector<double> layerFractions(const ExtrusionLayers& layers, EntityId id) {
   return f;
 }
 
+bool isBoundaryLayer(const ExtrusionRecord& record) {
+  return record.motion && record.motion->kind == ExtrusionMotion::Kind::Normals;
+}
+
+std::vector<double> sweepFractions(const ExtrusionRecord& record, EntityId id) {
+  if (!isBoundaryLayer(record) || record.layers.heights.empty())
+    return layerFractions(record.layers, id);
+  ExtrusionLayers scaled = record.layers;
+  const double last = scaled.heights.back();
+  if (last == 0 || !std::isfinite(last))
+    throw MeshError(id, "the last height of its boundary layer's Layers is zero");
+  for (double& h : scaled.heights) h /= last;
+  return layerFractions(scaled, id);
+}
+
+Vec3 sweptPoint(const Sweep& s, const ExtrusionRecord& record, Vec3 p, double f, EntityId id) {
+  if (!isBoundaryLayer(record)) return record.motion->apply(p, f);
+  if (!s.normals) throw MeshError(id, "its boundary layer has no normals to grow along");
+  return s.normals->moved(s.mesh, record.motion->layerIndex, p,
+                          f * record.layers.heights.back(), id);
+}
+
 // The nodes of the entity's boundary and of their boundaries, down to points.
 static void addClosure(const Model& model, const Mesh& mesh, EntityId e,
                        NodeLocator& locator, std::set<EntityId>& seen) {
@@ -69,7 +91,10 @@ std::string nodeText(NodeIndex n) { return "node " + std::to_string(n + 1); }
 namespace {
 
 using extrusion::closureLocator;
+using extrusion::isBoundaryLayer;
 using extrusion::layerFractions;
+using extrusion::sweepFractions;
+using extrusion::sweptPoint;
 using extrusion::nodeText;
 using extrusion::NodeLocator;
 using extrusion::Sweep;
@@ -168,22 +193,26 @@ void meshSweptCurve(const Sweep& s, const ModelCurve& curve, const ExtrusionReco
   const bool fromStart = curve.startPoint == record.source;
   if (!source || (!fromStart && curve.endPoint != record.source))
     throw MeshError(id, "its source point " + std::to_string(record.source) + " is not an end");
-  const std::vector<double> f = layerFractions(record.layers, id);
+  const std::vector<double> f = sweepFractions(record, id);
   const NodeIndex sourceNode = pointNode(s.mesh, record.source);
   EntityMesh& em = s.mesh.entity(id);
   std::vector<NodeIndex> chain{sourceNode};
   std::vector<double> parameters;
   const Interval range = curve.geometry ? curve.geometry->range() : Interval{};
   for (std::size_t k = 1; k + 1 < f.size(); ++k) {
-    const Vec3 p = record.motion->apply(source->xyz, f[k]);
+    const Vec3 p = sweptPoint(s, record, s.mesh.node(sourceNode), f[k], id);
     chain.push_back(s.mesh.addNode(p));
     s.mesh.setNodeSize(chain.back(), s.mesh.nodeSize(sourceNode));
     const double along = fromStart ? f[k] : 1 - f[k];
-    if (curve.geometry)
+    // A boundary layer's curves are shaped by their mesh alone: no parameters on the geometry.
+    if (curve.geometry && !isBoundaryLayer(record))
       parameters.push_back(
           curveParameter(*curve.geometry, p, range.min + along * (range.max - range.min)));
   }
   chain.push_back(pointNode(s.mesh, fromStart ? curve.endPoint : curve.startPoint));
+  // A boundary layer's point stands where its source does: its node goes to the layer's top.
+  if (isBoundaryLayer(record))
+    s.mesh.setNode(chain.back(), sweptPoint(s, record, s.mesh.node(sourceNode), 1, id));
   if (!fromStart) {
     std::reverse(chain.begin(), chain.end());
     std::reverse(parameters.begin(), parameters.end());
@@ -206,7 +235,7 @@ void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord
   std::vector<NodeIndex> image;
   std::vector<Vec3> interior;
   for (std::size_t i = 0; i < chain.size(); ++i) {
-    const Vec3 p = record.motion->apply(s.mesh.node(chain[i]), 1);
+    const Vec3 p = sweptPoint(s, record, s.mesh.node(chain[i]), 1, id);
     if (i > 0 && i + 1 < chain.size()) {
       image.push_back(s.mesh.addNode(p));
       s.mesh.setNodeSize(image.back(), s.mesh.nodeSize(chain[i]));
@@ -222,7 +251,7 @@ void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord
     std::reverse(image.begin(), image.end());
   EntityMesh& em = s.mesh.entity(id);
   em.nodes.assign(image.begin() + 1, image.end() - 1);
-  if (top.geometry) {
+  if (top.geometry && !isBoundaryLayer(record)) {
     const Interval r = top.geometry->range();
     for (std::size_t i = 1; i + 1 < image.size(); ++i) {
       const double along = static_cast<double>(i) / static_cast<double>(image.size() - 1);
@@ -240,7 +269,7 @@ void meshImageCurve(const Sweep& s, const ModelCurve& top, const ExtrusionRecord
 void meshSweptSurface(const Sweep& s, const ModelSurface& surface) {
   const EntityId id{2, surface.tag};
   const ExtrusionRecord& record = *surface.extrusion;
-  const std::vector<double> f = layerFractions(record.layers, id);
+  const std::vector<double> f = sweepFractions(record, id);
   const std::vector<NodeIndex> chain = curveNodeChain(s.model, s.mesh, record.source);
   const NodeLocator boundary = closureLocator(s.model, s.mesh, id, s.tolerance);
   EntityMesh& em = s.mesh.entity(id);
@@ -252,7 +281,7 @@ void meshSweptSurface(const Sweep& s, const ModelSurface& surface) {
         grid[i] = chain[i];
         continue;
       }
-      const Vec3 p = record.motion->apply(s.mesh.node(chain[i]), f[k]);
+      const Vec3 p = sweptPoint(s, record, s.mesh.node(chain[i]), f[k], id);
       if (const std::optional<NodeIndex> found = boundary.find(p)) {
         grid[k * n + i] = *found;
       } else if (k < layers && i > 0 && i + 1 < n) {
@@ -293,7 +322,7 @@ void meshImageSurface(const Sweep& s, const ModelSurface& top, const ExtrusionRe
     for (NodeIndex n : block.nodes) {
       auto [it, added] = image.try_emplace(n, 0);
       if (added) {
-        const Vec3 p = record.motion->apply(s.mesh.node(n), 1);
+        const Vec3 p = sweptPoint(s, record, s.mesh.node(n), 1, id);
         if (inside.contains(n)) {
           it->second = s.mesh.addNode(p);
           s.mesh.setNodeSize(it->second, s.mesh.nodeSize(n));
@@ -322,7 +351,8 @@ bool isMeshed(const Mesh& mesh, EntityId e) {
 
 bool isLayeredExtrusion(const ModelVolume& volume) { return hasLayers(volume.extrusion); }
 
-ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
+ExtrusionMesher::ExtrusionMesher(const Model& model)
+    : model_(model), normals_(std::make_unique<LayerNormals>(model)) {
   const BoundingBox box = model.boundingBox();
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
@@ -334,6 +364,31 @@ ExtrusionMesher::ExtrusionMesher(const Model& model) : model_(model) {
   for (const auto& [tag, volume] : model.volumes())
     if (hasLayers(volume.extrusion) && model.surface(volume.extrusion->top))
       topSurfaces_[volume.extrusion->top] = &*volume.extrusion;
+  for (const auto& [tag, curve] : model.curves())
+    if (hasLayers(curve.extrusion) && isBoundaryLayer(*curve.extrusion))
+      layerPoints_[curve.startPoint == curve.extrusion->source ? curve.endPoint
+                                                               : curve.startPoint] =
+          &*curve.extrusion;
+}
+
+bool ExtrusionMesher::touchesLayer(EntityId id) const {
+  const ModelCurve* curve = id.dim == 1 ? model_.curve(id.tag) : nullptr;
+  if (!curve || sweepRecord(id.tag) || imageRecord(id)) return false;
+  return layerPoints_.contains(curve->startPoint) || layerPoints_.contains(curve->endPoint);
+}
+
+void ExtrusionMesher::followLayerEnds(EntityId id, Mesh& mesh) const {
+  const ModelCurve& curve = *model_.curve(id.tag);
+  auto moveOf = [&](int point) {
+    return mesh.node(pointNode(mesh, point)) - model_.point(point)->xyz;
+  };
+  const Vec3 start = moveOf(curve.startPoint), end = moveOf(curve.endPoint);
+  const std::vector<NodeIndex> chain = curveNodeChain(model_, mesh, id.tag);
+  for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(chain.size() - 1);
+    mesh.setNode(chain[i], mesh.node(chain[i]) + (1 - t) * start + t * end);
+  }
+  mesh.entity(id).parametric.clear();  // off the geometry now, as the layer is
 }
 
 const ExtrusionRecord* ExtrusionMesher::sweepRecord(int curveTag) const {
@@ -388,13 +443,39 @@ const ExtrusionRecord* ExtrusionMesher::imageRecord(EntityId id) const {
   return it == tops.end() ? nullptr : it->second;
 }
 
+bool ExtrusionMesher::waitsForSurfaces(EntityId id) const {
+  auto grownFromSurfaces = [&](const ExtrusionRecord* record) {
+    return record && isBoundaryLayer(*record) &&
+           normals_->fromSurfaces(record->motion->layerIndex);
+  };
+  if (id.dim == 1) {
+    if (touchesLayer(id)) {
+      const ModelCurve& curve = *model_.curve(id.tag);
+      for (int end : {curve.startPoint, curve.endPoint})
+        if (const auto it = layerPoints_.find(end);
+            it != layerPoints_.end() && grownFromSurfaces(it->second))
+          return true;
+    }
+    return grownFromSurfaces(sweepRecord(id.tag)) || grownFromSurfaces(imageRecord(id));
+  }
+  if (id.dim != 2) return false;
+  const ModelSurface* surface = model_.surface(id.tag);
+  if (!surface) return false;
+  if (grownFromSurfaces(surface->extrusion ? &*surface->extrusion : nullptr) ||
+      grownFromSurfaces(imageRecord(id)))
+    return true;
+  for (int c : model_.boundary(id))
+    if (waitsForSurfaces({1, std::abs(c)})) return true;
+  return false;
+}
+
 bool ExtrusionMesher::meshesVolume(int tag) const {
   const ModelVolume* volume = model_.volume(tag);
   return volume && hasLayers(volume->extrusion);
 }
 
 void ExtrusionMesher::meshSwept(EntityId id, Mesh& mesh) const {
-  const Sweep s{model_, tolerance_, mesh};
+  const Sweep s{model_, tolerance_, mesh, normals_.get()};
   if (id.dim == 1)
     meshSweptCurve(s, *model_.curve(id.tag), *sweepRecord(id.tag));
   else
@@ -406,7 +487,7 @@ void ExtrusionMesher::meshImage(EntityId id, Mesh& mesh) const {
   if (!record) throw MeshError(id, "it is the top of no extrusion with layers");
   if (!isMeshed(mesh, {id.dim, record->source}))
     throw MeshError(id, "its source " + std::to_string(record->source) + " has no mesh to copy");
-  const Sweep s{model_, tolerance_, mesh};
+  const Sweep s{model_, tolerance_, mesh, normals_.get()};
   if (id.dim == 1)
     meshImageCurve(s, *model_.curve(id.tag), *record);
   else
@@ -414,7 +495,7 @@ void ExtrusionMesher::meshImage(EntityId id, Mesh& mesh) const {
 }
 
 void ExtrusionMesher::meshVolumes(Mesh& mesh) const {
-  const Sweep s{model_, tolerance_, mesh};
+  const Sweep s{model_, tolerance_, mesh, normals_.get()};
   for (const auto& [tag, volume] : model_.volumes())
     if (hasLayers(volume.extrusion)) extrusion::meshSweptVolume(s, volume);
 }

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
+#include "mesh/structured/layer_normals.h"
 
 namespace geomesh {
 
@@ -13,7 +15,8 @@ namespace geomesh {
 // point gets one segment per layer element; a surface swept by a curve gets the source
 // curve's nodes swept layer by layer (quadrangles, or each cut into two triangles); a volume
 // swept by a surface gets prisms and hexahedra (Recombine) or tetrahedra, three per prism.
-// The top of such a sweep is meshed as the image of its source. Node k of a sweep is the
+// The top of such a sweep is meshed as the image of its source. A boundary layer (a sweep along
+// normals) moves the source nodes along the normals of LayerNormals instead of a motion. Node k of a sweep is the
 // motion at the layer fraction k applied to the source node. A side curve of a layered sweep of a
 // curve, joining an end of the source to the matching end of the top, is swept with the same
 // layers even when the kernel does not record it.
@@ -37,6 +40,16 @@ class ExtrusionMesher {
   // MeshError naming the top when it is not.
   void meshImage(EntityId id, Mesh& mesh) const;
 
+  // Whether the curve or surface belongs to a boundary layer grown from surfaces (or is bounded
+  // by such a curve): it is meshed once the surfaces it grows from are, in the 2D stage.
+  bool waitsForSurfaces(EntityId id) const;
+
+  // Whether the curve, meshed by its own mesher, ends at a point a boundary layer moved: it is
+  // meshed after the layer's curves, then follows its ends (followLayerEnds).
+  bool touchesLayer(EntityId id) const;
+  // Moves the interior nodes of such a curve by the moves of its ends, blended along it.
+  void followLayerEnds(EntityId id, Mesh& mesh) const;
+
   bool meshesVolume(int tag) const;
   // Run after the surfaces are meshed.
   void meshVolumes(Mesh& mesh) const;
@@ -50,6 +63,8 @@ class ExtrusionMesher {
   std::map<int, ExtrusionRecord> impliedSweeps_;       // side curve -> its sweep from a point
   std::map<int, const ExtrusionRecord*> topCurves_;    // top curve -> the surface's record
   std::map<int, const ExtrusionRecord*> topSurfaces_;  // top surface -> the volume's record
+  std::unique_ptr<LayerNormals> normals_;
+  std::map<int, const ExtrusionRecord*> layerPoints_;  // point a layer made -> its curve's record
 };
 
 // Whether the volume is extruded with layers.

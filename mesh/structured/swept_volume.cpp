@@ -50,7 +50,7 @@ class Columns {
           std::vector<double> fractions)
       : s_(s),
         volume_(volume),
-        motion_(*volume.extrusion->motion),
+        record_(*volume.extrusion),
         inside_(source.nodes.begin(), source.nodes.end()),
         boundary_(closureLocator(s.model, s.mesh, {3, volume.tag}, s.tolerance)),
         f_(std::move(fractions)) {}
@@ -61,7 +61,7 @@ class Columns {
     std::vector<NodeIndex>& column = it->second;
     column.push_back(n);
     for (std::size_t k = 1; k < f_.size(); ++k) {
-      const Vec3 p = motion_.apply(s_.mesh.node(n), f_[k]);
+      const Vec3 p = sweptPoint(s_, record_, s_.mesh.node(n), f_[k], {3, volume_.tag});
       if (const std::optional<NodeIndex> found = boundary_.find(p)) {
         column.push_back(*found);
       } else if (inside_.contains(n) && k + 1 < f_.size()) {
@@ -78,7 +78,7 @@ class Columns {
  private:
   const Sweep& s_;
   const ModelVolume& volume_;
-  const ExtrusionMotion& motion_;
+  const ExtrusionRecord& record_;
   std::set<NodeIndex> inside_;
   NodeLocator boundary_;
   std::vector<double> f_;
@@ -188,7 +188,7 @@ void meshSweptVolume(const Sweep& s, const ModelVolume& volume) {
   const EntityMesh* source = s.mesh.find({2, record.source});
   if (!source || source->elementCount() == 0)
     throw MeshError(id, "its source surface " + std::to_string(record.source) + " has no mesh");
-  std::vector<double> f = layerFractions(record.layers, id);
+  std::vector<double> f = sweepFractions(record, id);
   const std::size_t layers = f.size() - 1;
   Columns columns(s, volume, *source, std::move(f));
   EntityMesh& em = s.mesh.entity(id);

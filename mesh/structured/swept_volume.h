@@ -10,6 +10,7 @@
 
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
+#include "mesh/structured/layer_normals.h"
 
 namespace geomesh::extrusion {
 
@@ -57,7 +58,18 @@ struct Sweep {
   const Model& model;
   double tolerance;
   Mesh& mesh;
+  const LayerNormals* normals = nullptr;  // for the boundary layers (sweeps along normals)
 };
+
+// The layer fractions of the record's sweep (layerFractions); the heights of a boundary layer
+// are lengths, taken as fractions of the last one.
+std::vector<double> sweepFractions(const ExtrusionRecord& record, EntityId id);
+
+// Where the record's sweep takes p at the layer fraction f: its motion, or for a boundary
+// layer, the last height times f along the normal at p.
+Vec3 sweptPoint(const Sweep& s, const ExtrusionRecord& record, Vec3 p, double f, EntityId id);
+
+bool isBoundaryLayer(const ExtrusionRecord& record);
 
 // Prisms and hexahedra (Recombine) or tetrahedra over the mesh of the volume's source surface,
 // layer by layer; the volume's boundary is meshed.

@@ -1,0 +1,123 @@
+// LayerNormals: angle-weighted mean normals of the boundary layers' source meshes, per index.
+#include "mesh/structured/layer_normals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+
+#include "mesh/core/mesh_error.h"
+#include "mesh/structured/swept_volume.h"
+
+namespace geomesh {
+
+struct LayerNormals::Field {
+  explicit Field(const Mesh& mesh, double tolerance) : locator(mesh, tolerance) {}
+  extrusion::NodeLocator locator;
+  std::unordered_map<NodeIndex, Vec3> sums;
+};
+
+namespace {
+
+bool isLayer(const std::optional<ExtrusionRecord>& record) {
+  return record && record->motion && record->motion->kind == ExtrusionMotion::Kind::Normals;
+}
+
+double angleBetween(Vec3 a, Vec3 b) {
+  const double na = norm(a), nb = norm(b);
+  if (na == 0 || nb == 0) return 0;
+  return std::acos(std::clamp(dot(a, b) / (na * nb), -1.0, 1.0));
+}
+
+// Each corner of a face adds the face's unit normal, weighed by the face's angle there.
+void addFace(const Mesh& mesh, std::span<const NodeIndex> f,
+             std::unordered_map<NodeIndex, Vec3>& sums) {
+  const std::size_t n = f.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p = mesh.node(f[i]);
+    const Vec3 next = mesh.node(f[(i + 1) % n]) - p, previous = mesh.node(f[(i + n - 1) % n]) - p;
+    const Vec3 normal = cross(next, previous);
+    const double length = norm(normal);
+    if (length == 0) continue;
+    sums[f[i]] = sums[f[i]] + angleBetween(next, previous) / length * normal;
+  }
+}
+
+}  // namespace
+
+LayerNormals::LayerNormals(const Model& model) : model_(model) {
+  const BoundingBox box = model.boundingBox();
+  const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
+  tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
+  for (const auto& [tag, volume] : model.volumes())
+    if (isLayer(volume.extrusion))
+      surfaces_[volume.extrusion->motion->layerIndex].insert(volume.extrusion->source);
+  for (const auto& [tag, surface] : model.surfaces())
+    if (isLayer(surface.extrusion))
+      curves_[surface.extrusion->motion->layerIndex].insert(surface.extrusion->source);
+}
+
+LayerNormals::~LayerNormals() = default;
+
+const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
+                                               EntityId asking) const {
+  if (const auto it = fields_.find(index); it != fields_.end()) return *it->second;
+  auto made = std::make_unique<Field>(mesh, tolerance_);
+  std::unordered_map<NodeIndex, Vec3>& sums = made->sums;
+  if (const auto surfaces = surfaces_.find(index); surfaces != surfaces_.end()) {
+    for (int tag : surfaces->second) {
+      const EntityMesh* em = mesh.find({2, tag});
+      if (!em || em->elementCount() == 0)
+        throw MeshError(asking, "surface " + std::to_string(tag) +
+                                    ", which its boundary layer grows from, has no mesh");
+      for (const ElementBlock& block : em->blocks) {
+        const std::size_t size = block.type == ElementType::Triangle3 ? 3
+                                 : block.type == ElementType::Quad4   ? 4
+                                                                      : 0;
+        if (size == 0) continue;
+        for (std::size_t e = 0; e + size <= block.nodes.size(); e += size)
+          addFace(mesh, std::span<const NodeIndex>(block.nodes.data() + e, size), sums);
+      }
+    }
+  } else if (const auto curves = curves_.find(index); curves != curves_.end()) {
+    for (int tag : curves->second) {
+      const EntityMesh* em = mesh.find({1, tag});
+      if (!em || em->elementCount() == 0)
+        throw MeshError(asking, "curve " + std::to_string(tag) +
+                                    ", which its boundary layer grows from, has no mesh");
+      for (const ElementBlock& block : em->blocks) {
+        if (block.type != ElementType::Line2) continue;
+        for (std::size_t e = 0; e + 2 <= block.nodes.size(); e += 2) {
+          const Vec3 d = mesh.node(block.nodes[e + 1]) - mesh.node(block.nodes[e]);
+          const Vec3 normal = cross(d, Vec3{0, 0, 1});
+          const double length = norm(normal);
+          if (length == 0) continue;
+          for (std::size_t k = 0; k < 2; ++k)
+            sums[block.nodes[e + k]] = sums[block.nodes[e + k]] + normal / length;
+        }
+      }
+    }
+  } else {
+    throw MeshError(asking, "no surface or curve is extruded along normals with index " +
+                                std::to_string(index) + " to give its normals");
+  }
+  for (const auto& [node, sum] : sums) made->locator.add(node);
+  return *fields_.emplace(index, std::move(made)).first->second;
+}
+
+Vec3 LayerNormals::moved(const Mesh& mesh, int index, Vec3 p, double height,
+                         EntityId asking) const {
+  const Field& f = field(mesh, index, asking);
+  const std::optional<NodeIndex> node = f.locator.find(p);
+  if (!node)
+    throw MeshError(asking, "its boundary layer starts at a point that is on none of the "
+                            "surfaces or curves it grows from");
+  const Vec3 sum = f.sums.at(*node);
+  const double length = norm(sum);
+  if (!(length > 1e-12))
+    throw MeshError(asking, "the normals of the faces its boundary layer grows from cancel at "
+                            "node " + std::to_string(*node + 1));
+  return p + height / length * sum;
+}
+
+}  // namespace geomesh

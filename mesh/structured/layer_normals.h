@@ -1,0 +1,51 @@
+// LayerNormals: the directions boundary layers grow along, from the meshes of their sources.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <set>
+#include <unordered_map>
+
+#include "kernel/model.h"
+#include "mesh/core/mesh.h"
+
+namespace geomesh {
+
+namespace extrusion {
+class NodeLocator;
+}
+
+// The unit normals at the nodes of the sources of the boundary layers (extrusions along
+// normals) of each index of Using Index: at a node, the mean of the unit normals of the faces
+// around it in the source surfaces of that index, each weighed by its angle there. Where no
+// surface of that index is extruded (a layer in the plane, from curves), the segments of the
+// source curves give the normals, each its direction turned a quarter to the right in the
+// xy-plane (tangent x z). Layers of one index share their normals, so that touching layers
+// made by separate extrusions meet along one face.
+class LayerNormals {
+ public:
+  explicit LayerNormals(const Model& model);
+  ~LayerNormals();
+  LayerNormals(const LayerNormals&) = delete;
+  LayerNormals& operator=(const LayerNormals&) = delete;
+
+  // Whether the layers of this index grow from surfaces: their curves wait for the 2D mesh.
+  bool fromSurfaces(int index) const { return surfaces_.contains(index); }
+
+  // p, a node of a source of the layers of `index`, moved `height` along its normal. The
+  // normals of an index are computed from the mesh on first use: its sources must be meshed.
+  // Throws MeshError naming `asking` when p is no source node or its normal is undefined.
+  Vec3 moved(const Mesh& mesh, int index, Vec3 p, double height, EntityId asking) const;
+
+ private:
+  struct Field;
+  const Field& field(const Mesh& mesh, int index, EntityId asking) const;
+
+  const Model& model_;
+  double tolerance_ = 0;
+  std::map<int, std::set<int>> surfaces_;  // index -> source surfaces
+  std::map<int, std::set<int>> curves_;    // index -> source curves
+  mutable std::map<int, std::unique_ptr<Field>> fields_;
+};
+
+}  // namespace geomesh
