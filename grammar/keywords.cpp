@@ -10,7 +10,8 @@ namespace {
 // Words that start or continue a command (statement heads and shape kinds).
 constexpr std::string_view kCommandWords[] = {
     "Abort", "AdaptMesh", "Affine", "BSpline", "Background", "Bezier", "Block", "BooleanDifference",
-    "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundingBox", "Box",
+    "BooleanFragments", "BooleanIntersection", "BooleanUnion", "Boundary", "BoundaryLayer",
+    "BoundingBox", "Box",
     "CatmullRom", "Chamfer", "Characteristic", "Circle", "ClassifySurfaces", "Closest", "Coherence", "Cohomology",
     "Color", "Combine", "CombinedBoundary", "Compound", "Cone", "CreateGeometry", "CreateTopology", "Curve",
     "Cylinder", "Delete", "Dilate", "Disk", "Draw", "Duplicata", "Ellipse", "Ellipsis", "Error", "Exit",

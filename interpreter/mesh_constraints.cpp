@@ -1,6 +1,7 @@
 // Mesh constraints in scripts: Transfinite Curve/Surface, Recombine Surface, MeshAlgorithm
 // Surface, Field[n] = Type, Field[n].Option = value, Background Field = n. They are recorded
 // in the model's MeshConstraints, which outlive synchronization, and read by the mesher.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -74,6 +75,16 @@ void Interpreter::setBackgroundField(const ast::CommandStmt& command,
   if (!command.value) return unsupportedStatement(command, where);
   session_.model().meshConstraints().backgroundField =
       static_cast<int>(std::lround(evaluateNumber(*command.value)));
+}
+
+// BoundaryLayer Field = n: field n (a BoundaryLayer field) builds a layer in the surfaces it
+// touches; given several times, each field is kept once, in order.
+void Interpreter::addBoundaryLayerField(const ast::CommandStmt& command,
+                                        const SourceLocation& where) {
+  if (!command.value) return unsupportedStatement(command, where);
+  const int tag = static_cast<int>(std::lround(evaluateNumber(*command.value)));
+  std::vector<int>& fields = session_.model().meshConstraints().boundaryLayerFields;
+  if (std::find(fields.begin(), fields.end(), tag) == fields.end()) fields.push_back(tag);
 }
 
 void Interpreter::defineTransfiniteCurve(const ast::CommandStmt& command,

@@ -60,6 +60,7 @@ std::span<const Interpreter::StatementRow> Interpreter::statementTable() {
       {"BooleanIntersection ...", &Interpreter::executeBoolean},
       {"BooleanUnion ...", &Interpreter::executeBoolean},
       {"Boundary", &Interpreter::executeShapeOperation},
+      {"BoundaryLayer Field", &Interpreter::addBoundaryLayerField},
       {"BoundingBox ...", &Interpreter::skipInBatch},
       {"Box", &Interpreter::defineBox},
       {"CatmullRom", &Interpreter::defineEntity},

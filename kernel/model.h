@@ -88,6 +88,7 @@ struct MeshConstraints {
   std::map<int, SizeFieldDefinition> sizeFields = {};
   int backgroundField = 0;  // Background Field = tag; 0: none
   int backgroundView = -1;  // Background Mesh View[index]; -1: none
+  std::vector<int> boundaryLayerFields = {};  // BoundaryLayer Field = tag, in order
 };
 
 struct ModelPoint {

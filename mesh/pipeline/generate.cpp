@@ -233,6 +233,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
     meshCurves(model, stage.rules, stage.fields, mesh, true);
     for (const PlannedEntity& p : layers) meshPlanned(p);
   }
+  for (const std::string& line : extruded.layerWarnings()) log.warning(line);
   mesh.dropUnheldNodes();  // the nodes recombination took out
   const MeshCheckReport report = checkMesh(model, mesh);
   for (const MeshProblem& problem : report.problems)

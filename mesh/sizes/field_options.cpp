@@ -58,7 +58,8 @@ std::optional<SizeFields::Type> fieldTypeNamed(const std::string& name) {
       {"AutomaticMeshSizeField", T::Automatic},
       {"ExternalProcess", T::ExternalProcess},
       {"PostView", T::PostView},
-      {"Adapt", T::Adapt}};
+      {"Adapt", T::Adapt},
+      {"BoundaryLayer", T::BoundaryLayer}};
   for (const auto& entry : kTypes)
     if (name == entry.first) return entry.second;
   return std::nullopt;
@@ -76,7 +77,9 @@ std::string canonicalFieldOption(const std::string& name) {
       {"R1_inner", "InnerR1"},         {"R1_outer", "OuterR1"},
       {"R2_inner", "InnerR2"},         {"R2_outer", "OuterR2"},
       {"V1_inner", "InnerV1"},         {"V1_outer", "OuterV1"},
-      {"V2_inner", "InnerV2"},         {"V2_outer", "OuterV2"}};
+      {"V2_inner", "InnerV2"},         {"V2_outer", "OuterV2"},
+      {"hwall_n", "Size"},             {"hfar", "SizeFar"},
+      {"FanNodesList", "FanPointsList"}};
   for (const auto& alias : kAliases)
     if (name == alias.first) return alias.second;
   return name;
@@ -134,6 +137,7 @@ std::vector<SlotDefault> numericOptions(SizeFields::Type t) {
               {S::SizeMax, kUnbounded}};
     case T::MathEval:
     case T::MathEvalAniso:
+    case T::BoundaryLayer:  // its options are read by boundary_layer_field.h
     case T::ExternalProcess:
     case T::Min:
     case T::Max: return {};

@@ -9,6 +9,7 @@
 #include "mesh/sizes/adapt_size.h"
 #include "mesh/sizes/automatic_size.h"
 #include "mesh/sizes/boundary_extension.h"
+#include "mesh/sizes/boundary_layer_field.h"
 #include "mesh/sizes/field_options.h"
 #include "mesh/sizes/finite_differences.h"
 #include "mesh/sizes/math_expression.h"
@@ -199,9 +200,22 @@ void precompute(SizeFields::Field& f, const std::string& field, const Model& mod
   }
 }
 
+// A BoundaryLayer field: its options, and the distance to its curves for its sizes.
+SizeFields::Field compileLayer(const Model& model, int tag, const SizeFieldDefinition& def,
+                               MessageSink& log) {
+  SizeFields::Field f;
+  f.type = Type::BoundaryLayer;
+  f.layer = std::make_unique<BoundaryLayerParameters>();
+  f.layer->tag = tag;
+  readBoundaryLayerOptions(*f.layer, "Field[" + std::to_string(tag) + "]", def, log);
+  f.wallDistance = std::make_unique<CurveDistance>(model, f.layer->curves);
+  return f;
+}
+
 // Reads one definition; unknown options are reported.
 SizeFields::Field compile(const Model& model, int tag, const SizeFieldDefinition& def,
                           Type type, const MeshOptions& options, MessageSink& log) {
+  if (type == Type::BoundaryLayer) return compileLayer(model, tag, def, log);
   SizeFields::Field f;
   f.type = type;
   std::vector<std::uint8_t> valid(SizeFields::kSlotCount, 0);
@@ -348,7 +362,7 @@ int SizeFields::Field::inField() const {
 }
 
 SizeFields::SizeFields(const Model& model, MessageSink& log, const MeshOptions& options)
-    : model_(&model), anisoMax_(options.anisoMax) {
+    : model_(&model), anisoMax_(options.anisoMax), log_(&log) {
   const MeshConstraints& c = model.meshConstraints();
   for (const auto& [tag, def] : c.sizeFields) {
     const std::optional<Type> type = fieldTypeNamed(def.type);
@@ -362,6 +376,15 @@ SizeFields::SizeFields(const Model& model, MessageSink& log, const MeshOptions& 
   for (int tag : fieldsInCycles(fields_)) {
     log.warning("Field[" + std::to_string(tag) + "] depends on itself; it reads as 1e22");
     fields_.erase(tag);
+  }
+  for (int tag : c.boundaryLayerFields) {
+    const auto it = fields_.find(tag);
+    if (it != fields_.end() && it->second.type == Type::BoundaryLayer)
+      layerFields_.push_back(tag);
+    else
+      log.warning("BoundaryLayer Field = " + std::to_string(tag) + ": " +
+                  (it == fields_.end() ? "field not defined" : "not a BoundaryLayer field") +
+                  "; ignored");
   }
   background_ = c.backgroundField;
   if (background_ != 0 && !fields_.contains(background_))
@@ -382,6 +405,16 @@ SizeFields& SizeFields::operator=(SizeFields&&) noexcept = default;
 void SizeFields::evaluate(std::span<const Vec3> points, EntityId where,
                           std::span<double> sizes) const {
   for (std::size_t k = 0; k < points.size(); ++k) sizes[k] = at(points[k], where);
+}
+
+std::vector<const BoundaryLayerParameters*> SizeFields::boundaryLayers() const {
+  std::vector<const BoundaryLayerParameters*> layers;
+  for (int tag : layerFields_) layers.push_back(fields_.at(tag).layer.get());
+  return layers;
+}
+
+void SizeFields::warning(std::string_view message) const {
+  if (log_) log_->warning(message);
 }
 
 bool SizeFields::hasBackgroundField() const {
@@ -562,6 +595,7 @@ double SizeFields::evaluateField(const Field& f, Vec3 p, EntityId where, int dep
     case Type::ExternalProcess: return kUnbounded;
     case Type::PostView: return f.view ? f.view->size(p) : kUnbounded;
     case Type::Adapt: return f.adapt ? f.adapt->at(p) : kUnbounded;
+    case Type::BoundaryLayer: return f.layer->sizeAt((*f.wallDistance)(p));
     default: return evaluateDerived(f, p, where, depth);
   }
 }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ class BoundaryExtension;
 class AutomaticSize;
 class ViewSize;
 class AdaptSize;
+struct BoundaryLayerParameters;
+class CurveDistance;
 
 // The mesh size fields a script defined (Field[n] = Type; Field[n].Option = v), compiled for
 // evaluation, and the background field (Background Field = n) that the meshers follow. Each
@@ -60,6 +63,9 @@ class AdaptSize;
 //  - Adapt (geomesh's own): sizes equidistributing the error estimates of a view over the
 //    current mesh, for TargetElements or TargetError (View, Order, Dimension, SizeMin,
 //    SizeMax); see adapt_size.h.
+//  - BoundaryLayer: the options of a 2D boundary layer (boundary_layer_field.h), which the
+//    surface mesher builds for the fields named by BoundaryLayer Field = n; read as a size
+//    field, the layer's cell height at the distance from its curves, capped by SizeFar.
 // Background Mesh View[n] (MeshConstraints::backgroundView) reads view n as a PostView field
 // with the default options does.
 // Anisotropic types: our meshers are isotropic, and follow an anisotropic field through the
@@ -96,11 +102,17 @@ class SizeFields {
   std::optional<std::array<double, 6>> metric(Vec3 point, EntityId where) const;
   // Whether the background carries anisotropy (a tensor view, MathEvalAniso...).
   bool hasAnisotropicBackground() const;
+  // The BoundaryLayer fields that BoundaryLayer Field = n named, in order (others are
+  // reported when the fields are read, and left out).
+  std::vector<const BoundaryLayerParameters*> boundaryLayers() const;
+  // A warning of the meshers that read the fields (the layers'), to the run's log.
+  void warning(std::string_view message) const;
 
   enum class Type {
     Constant, Box, Ball, Cylinder, Distance, Threshold, MathEval, Min, Max, Restrict,
     Frustum, Param, Gradient, Curvature, Laplacian, MaxEigenHessian, Mean, Octree, Extend,
-    MathEvalAniso, AttractorAnisoCurve, Automatic, ExternalProcess, PostView, Adapt
+    MathEvalAniso, AttractorAnisoCurve, Automatic, ExternalProcess, PostView, Adapt,
+    BoundaryLayer
   };
   // Numeric options, by position (each type uses some of them).
   enum class Slot : std::uint8_t {
@@ -126,6 +138,8 @@ class SizeFields {
     std::unique_ptr<AutomaticSize> automatic;      // AutomaticMeshSizeField
     std::unique_ptr<ViewSize> view;                // PostView
     std::unique_ptr<AdaptSize> adapt;              // Adapt
+    std::unique_ptr<BoundaryLayerParameters> layer;  // BoundaryLayer
+    std::unique_ptr<CurveDistance> wallDistance;     // BoundaryLayer
     double number(Slot s) const { return slots[static_cast<std::size_t>(s)]; }
     int inField() const;
   };
@@ -144,6 +158,8 @@ class SizeFields {
   int background_ = 0;
   std::unique_ptr<ViewSize> backgroundView_;  // Background Mesh View
   double anisoMax_ = 1e33;                    // Mesh.AnisoMax
+  std::vector<int> layerFields_;              // BoundaryLayer Field = n, checked
+  MessageSink* log_ = nullptr;
 };
 
 }  // namespace geomesh

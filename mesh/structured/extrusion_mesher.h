@@ -3,6 +3,7 @@
 
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "kernel/model.h"
@@ -49,6 +50,9 @@ class ExtrusionMesher {
   bool touchesLayer(EntityId id) const;
   // Moves the interior nodes of such a curve by the moves of its ends, blended along it.
   void followLayerEnds(EntityId id, Mesh& mesh) const;
+
+  // Where the boundary layers meshed by this mesher had to be made thinner than asked.
+  std::vector<std::string> layerWarnings() const { return normals_->warnings(); }
 
   bool meshesVolume(int tag) const;
   // Run after the surfaces are meshed.

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <sstream>
 #include <string>
 
 #include "mesh/core/mesh_error.h"
+#include "mesh/structured/layer_shrinking.h"
 #include "mesh/structured/swept_volume.h"
 
 namespace geomesh {
@@ -14,7 +16,9 @@ namespace geomesh {
 struct LayerNormals::Field {
   explicit Field(const Mesh& mesh, double tolerance) : locator(mesh, tolerance) {}
   extrusion::NodeLocator locator;
-  std::unordered_map<NodeIndex, Vec3> sums;
+  std::unordered_map<NodeIndex, Vec3> sums, units;
+  LayerFaces faces;
+  LayerShrinking shrinking;
 };
 
 namespace {
@@ -49,12 +53,38 @@ LayerNormals::LayerNormals(const Model& model) : model_(model) {
   const BoundingBox box = model.boundingBox();
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
+  auto noteHeight = [&](const ExtrusionRecord& r) {
+    if (r.layers.heights.empty()) return;
+    double& h = heights_[r.motion->layerIndex];
+    if (std::abs(r.layers.heights.back()) > std::abs(h)) h = r.layers.heights.back();
+  };
   for (const auto& [tag, volume] : model.volumes())
-    if (isLayer(volume.extrusion))
+    if (isLayer(volume.extrusion)) {
       surfaces_[volume.extrusion->motion->layerIndex].insert(volume.extrusion->source);
+      noteHeight(*volume.extrusion);
+    }
   for (const auto& [tag, surface] : model.surfaces())
-    if (isLayer(surface.extrusion))
-      curves_[surface.extrusion->motion->layerIndex].insert(surface.extrusion->source);
+    if (isLayer(surface.extrusion)) {
+      const int index = surface.extrusion->motion->layerIndex;
+      curves_[index].insert(surface.extrusion->source);
+      if (!surfaces_.contains(index)) noteHeight(*surface.extrusion);
+    }
+}
+
+std::vector<std::string> LayerNormals::warnings() const {
+  std::vector<std::string> lines;
+  for (const auto& [index, f] : fields_) {
+    const LayerShrinking& s = f->shrinking;
+    if (s.shrunk == 0) continue;
+    std::ostringstream line;
+    line << "boundary layer of index " << index << ": " << s.shrunk
+         << " columns made thinner than asked, where the layer would cross itself or the "
+            "layer facing it (down to "
+         << std::lround(100 * s.smallest) << "% at (" << s.at.x << ", " << s.at.y << ", "
+         << s.at.z << "))";
+    lines.push_back(line.str());
+  }
+  return lines;
 }
 
 LayerNormals::~LayerNormals() = default;
@@ -75,8 +105,12 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
                                  : block.type == ElementType::Quad4   ? 4
                                                                       : 0;
         if (size == 0) continue;
-        for (std::size_t e = 0; e + size <= block.nodes.size(); e += size)
-          addFace(mesh, std::span<const NodeIndex>(block.nodes.data() + e, size), sums);
+        for (std::size_t e = 0; e + size <= block.nodes.size(); e += size) {
+          const std::span<const NodeIndex> face(block.nodes.data() + e, size);
+          addFace(mesh, face, sums);
+          made->faces.nodes.insert(made->faces.nodes.end(), face.begin(), face.end());
+          made->faces.sizes.push_back(static_cast<unsigned char>(size));
+        }
       }
     }
   } else if (const auto curves = curves_.find(index); curves != curves_.end()) {
@@ -94,6 +128,8 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
           if (length == 0) continue;
           for (std::size_t k = 0; k < 2; ++k)
             sums[block.nodes[e + k]] = sums[block.nodes[e + k]] + normal / length;
+          made->faces.nodes.insert(made->faces.nodes.end(), {block.nodes[e], block.nodes[e + 1]});
+          made->faces.sizes.push_back(2);
         }
       }
     }
@@ -101,7 +137,16 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
     throw MeshError(asking, "no surface or curve is extruded along normals with index " +
                                 std::to_string(index) + " to give its normals");
   }
-  for (const auto& [node, sum] : sums) made->locator.add(node);
+  std::vector<NodeIndex> nodes;
+  for (const auto& [node, sum] : sums) nodes.push_back(node);
+  std::sort(nodes.begin(), nodes.end());
+  for (NodeIndex node : nodes) {
+    made->locator.add(node);
+    const double length = norm(sums.at(node));
+    made->units[node] = length > 1e-12 ? sums.at(node) / length : Vec3{};
+  }
+  const auto h = heights_.find(index);
+  made->shrinking = shrinkLayer(mesh, made->faces, made->units, h == heights_.end() ? 0 : h->second);
   return *fields_.emplace(index, std::move(made)).first->second;
 }
 
@@ -112,12 +157,11 @@ Vec3 LayerNormals::moved(const Mesh& mesh, int index, Vec3 p, double height,
   if (!node)
     throw MeshError(asking, "its boundary layer starts at a point that is on none of the "
                             "surfaces or curves it grows from");
-  const Vec3 sum = f.sums.at(*node);
-  const double length = norm(sum);
-  if (!(length > 1e-12))
+  const Vec3 unit = f.units.at(*node);
+  if (norm(unit) == 0)
     throw MeshError(asking, "the normals of the faces its boundary layer grows from cancel at "
                             "node " + std::to_string(*node + 1));
-  return p + height / length * sum;
+  return p + height * f.shrinking.factor.at(*node) * unit;
 }
 
 }  // namespace geomesh

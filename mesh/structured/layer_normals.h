@@ -4,7 +4,9 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
@@ -21,7 +23,8 @@ class NodeLocator;
 // surface of that index is extruded (a layer in the plane, from curves), the segments of the
 // source curves give the normals, each its direction turned a quarter to the right in the
 // xy-plane (tangent x z). Layers of one index share their normals, so that touching layers
-// made by separate extrusions meet along one face.
+// made by separate extrusions meet along one face. Each column is then shortened where the
+// thickest layer of its index would cross itself (shrinkLayer).
 class LayerNormals {
  public:
   explicit LayerNormals(const Model& model);
@@ -37,6 +40,10 @@ class LayerNormals {
   // Throws MeshError naming `asking` when p is no source node or its normal is undefined.
   Vec3 moved(const Mesh& mesh, int index, Vec3 p, double height, EntityId asking) const;
 
+  // Where the layers computed so far had to be made thinner than asked (see shrinkLayer),
+  // one line per index, in index order.
+  std::vector<std::string> warnings() const;
+
  private:
   struct Field;
   const Field& field(const Mesh& mesh, int index, EntityId asking) const;
@@ -45,6 +52,7 @@ class LayerNormals {
   double tolerance_ = 0;
   std::map<int, std::set<int>> surfaces_;  // index -> source surfaces
   std::map<int, std::set<int>> curves_;    // index -> source curves
+  std::map<int, double> heights_;  // index -> the height of its thickest layer (signed)
   mutable std::map<int, std::unique_ptr<Field>> fields_;
 };
 

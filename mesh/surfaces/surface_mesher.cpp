@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "mesh/surfaces/anisotropic_metric.h"
+#include "mesh/surfaces/boundary_layer_2d.h"
 #include "mesh/surfaces/constrained_delaunay.h"
 #include "mesh/surfaces/landing_grid.h"
 #include "mesh/curves/curve_mesher.h"
@@ -30,6 +31,7 @@ struct SurfaceInput {
   std::vector<ConstrainedSegment> segments;
   std::vector<int> segmentCurve;  // tag of the curve each segment comes from
   std::unordered_map<NodeIndex, std::vector<std::uint32_t>> pointsOf;
+  std::vector<double> givenSize;  // a boundary layer front's size at a point (0: none)
   std::vector<Vec2> seeds;  // free points around poles (parameters), numbered after the points
   double seedSize = 0;      // their target size
   double tolerance = 0;  // parameter distance under which two places of a node are one
@@ -268,6 +270,34 @@ SurfaceInput collectInput(const Model& model, const ModelSurface& surface, const
   return in;
 }
 
+// The input of the rest of a surface beyond its boundary layer: the layer's fronts instead of
+// the boundary loops, each front node keeping the spacing of the wall below it.
+SurfaceInput layerInput(const Model& model, const ModelSurface& surface, const Mesh& mesh,
+                        const SurfaceLayer& layer) {
+  SurfaceInput in;
+  const ParamBox box = surface.geometry->bounds();
+  in.tolerance = 1e-6 * std::hypot(box.u.max - box.u.min, box.v.max - box.v.min);
+  if (!std::isfinite(in.tolerance)) in.tolerance = 0;
+  double total = 0;
+  std::size_t count = 0;
+  for (std::size_t f = 0; f < layer.fronts.size(); ++f) {
+    std::vector<NodeIndex> chain = layer.fronts[f];
+    std::vector<std::optional<Vec2>> at(layer.frontParameters[f].begin(),
+                                        layer.frontParameters[f].end());
+    chain.push_back(chain.front());
+    at.push_back(at.front());
+    in.addChain(chain, at, 0, EdgeKind::Boundary);
+    in.givenSize.resize(in.nodes.size(), 0.0);
+    for (std::size_t k = 0; k < layer.fronts[f].size(); ++k) {
+      in.givenSize[in.pointsOf[layer.fronts[f][k]].front()] = layer.frontSizes[f][k];
+      total += layer.frontSizes[f][k], ++count;
+    }
+  }
+  addEmbedded(in, model, mesh, surface, count ? total / count : 0);
+  in.givenSize.resize(in.nodes.size(), 0.0);
+  return in;
+}
+
 std::vector<Vec2> parameters(const SurfaceGeometry& g, const Mesh& mesh, const SurfaceInput& in) {
   std::vector<Vec2> uv;
   uv.reserve(in.nodes.size());
@@ -337,7 +367,9 @@ void setBoundarySizes(const SurfaceInput& in, const SizeRules& rules, const Mesh
   const double fallback = rules.finish(rules.defaultSize);
   for (std::uint32_t k = 0; k < in.nodes.size(); ++k) {
     const NodeIndex n = in.nodes[k];
-    if (count[k] > 0)
+    if (k < in.givenSize.size() && in.givenSize[k] > 0)
+      tri.setSize(k + first, in.givenSize[k]);
+    else if (count[k] > 0)
       tri.setSize(k + first, total[k] / count[k]);
     else
       tri.setSize(k + first, mesh.nodeSize(n) > 0 ? mesh.nodeSize(n) : fallback);
@@ -429,16 +461,43 @@ Metric2 backgroundMetric(const SurfaceGeometry& g, const WorkFrame& frame,
   return outOfFrame(m, surface);
 }
 
-}  // namespace
+// The boundary layer's elements beside the rest of the surface's.
+void addLayerElements(const SurfaceLayer& layer, EntityMesh& em) {
+  if (!layer.triangles.empty()) {
+    ElementBlock& triangles = em.block(ElementType::Triangle3);
+    triangles.nodes.insert(triangles.nodes.end(), layer.triangles.begin(), layer.triangles.end());
+  }
+  if (!layer.quadrangles.empty()) {
+    ElementBlock& quadrangles = em.block(ElementType::Quad4);
+    quadrangles.nodes.insert(quadrangles.nodes.end(), layer.quadrangles.begin(),
+                             layer.quadrangles.end());
+  }
+}
 
-void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
-                 int smoothingPasses, Mesh& mesh, const SizeFields* fields,
-                 const SurfaceAlgorithm& algorithm, const AnisotropicSettings& anisotropy) {
+// Elements of a boundary layer's fan at a corner: Mesh.BoundaryLayerFanElements' default.
+constexpr int kFanElements = 5;
+
+// Meshes the surface, with the boundary layers of `fields` when `withLayers`; `layered` tells
+// whether a layer was built.
+void meshSurfaceOnce(const Model& model, const ModelSurface& surface, const SizeRules& rules,
+                     int smoothingPasses, Mesh& mesh, const SizeFields* fields,
+                     const SurfaceAlgorithm& algorithm, const AnisotropicSettings& anisotropy,
+                     bool withLayers, bool& layered) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
   const SurfaceGeometry& g = *surface.geometry;
-  const SurfaceInput in = collectInput(model, surface, mesh);
+  EntityMesh& em = mesh.entity(id);
+  std::optional<SurfaceLayer> layer;
+  if (fields && withLayers)
+    if (const auto layers = fields->boundaryLayers(); !layers.empty()) {
+      em.nodes.clear();
+      em.parametric.clear();
+      layer = buildSurfaceLayer(model, surface, layers, kFanElements, *fields, mesh, em);
+    }
+  layered = layer.has_value();
+  const SurfaceInput in =
+      layer ? layerInput(model, surface, mesh, *layer) : collectInput(model, surface, mesh);
   const std::vector<Vec2> uv = parameters(g, mesh, in);
   const WorkFrame frame(g, boxCenter(uv));
   std::vector<Vec2> work;
@@ -500,11 +559,36 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
                            anisotropy};
   const PlanarMesh planar = algorithm.mesh(interior);
 
-  EntityMesh& em = mesh.entity(id);
-  em.nodes.clear();
-  em.parametric.clear();
+  if (!layer) {
+    em.nodes.clear();
+    em.parametric.clear();
+  }
   em.blocks.clear();
   storeMesh(planar, in, frame, g, em, mesh);
+  if (layer) addLayerElements(*layer, em);
+}
+
+}  // namespace
+
+void meshSurface(const Model& model, const ModelSurface& surface, const SizeRules& rules,
+                 int smoothingPasses, Mesh& mesh, const SizeFields* fields,
+                 const SurfaceAlgorithm& algorithm, const AnisotropicSettings& anisotropy) {
+  bool layered = false;
+  try {
+    meshSurfaceOnce(model, surface, rules, smoothingPasses, mesh, fields, algorithm, anisotropy,
+                    true, layered);
+    return;
+  } catch (const MeshError& e) {
+    if (!layered) throw;
+    // The layer's fronts cross somewhere the checks did not see: the surface is meshed
+    // without its layer rather than not at all (the column nodes, held by nothing, are
+    // dropped with the others recombination leaves).
+    fields->warning("surface " + std::to_string(surface.tag) +
+                    ": the rest of the mesh could not be joined to its boundary layer (" +
+                    e.what() + "); meshed without the layer");
+  }
+  meshSurfaceOnce(model, surface, rules, smoothingPasses, mesh, fields, algorithm, anisotropy,
+                  false, layered);
 }
 
 }  // namespace geomesh

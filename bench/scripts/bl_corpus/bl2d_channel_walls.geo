@@ -1,0 +1,19 @@
+// 2D channel with a boundary layer of quadrangles on both walls.
+lc = 0.1;
+Point(1) = {0, 0, 0, lc};
+Point(2) = {2, 0, 0, lc};
+Point(3) = {2, 0.5, 0, lc};
+Point(4) = {0, 0.5, 0, lc};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Field[1] = BoundaryLayer;
+Field[1].CurvesList = {1, 3};
+Field[1].Size = 0.005;
+Field[1].Ratio = 1.3;
+Field[1].Thickness = 0.06;
+Field[1].Quads = 1;
+BoundaryLayer Field = 1;

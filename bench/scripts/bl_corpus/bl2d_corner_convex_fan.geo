@@ -1,0 +1,31 @@
+// A square obstacle in a box: boundary layer on two adjacent sides of the obstacle, which
+// meet at a convex corner with a fan of 4 elements.
+lc = 0.2; ls = 0.05;
+Point(1) = {0, 0, 0, lc};
+Point(2) = {2, 0, 0, lc};
+Point(3) = {2, 1.5, 0, lc};
+Point(4) = {0, 1.5, 0, lc};
+Point(5) = {0.7, 0.5, 0, ls};
+Point(6) = {1.2, 0.5, 0, ls};
+Point(7) = {1.2, 1.0, 0, ls};
+Point(8) = {0.7, 1.0, 0, ls};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Line(5) = {5, 6};
+Line(6) = {6, 7};
+Line(7) = {7, 8};
+Line(8) = {8, 5};
+Curve Loop(1) = {1, 2, 3, 4};
+Curve Loop(2) = {5, 6, 7, 8};
+Plane Surface(1) = {1, 2};
+Field[1] = BoundaryLayer;
+Field[1].CurvesList = {5, 6};
+Field[1].Size = 0.005;
+Field[1].Ratio = 1.3;
+Field[1].Thickness = 0.04;
+Field[1].Quads = 1;
+Field[1].FanPointsList = {6};
+Field[1].FanPointsSizesList = {4};
+BoundaryLayer Field = 1;

@@ -1,0 +1,29 @@
+// A square obstacle in a box with a triangle boundary layer (Quads = 0) on all its sides:
+// four convex corners, fans of the default count at two of them.
+lc = 0.2; ls = 0.04;
+Point(1) = {0, 0, 0, lc};
+Point(2) = {2, 0, 0, lc};
+Point(3) = {2, 1.5, 0, lc};
+Point(4) = {0, 1.5, 0, lc};
+Point(5) = {0.7, 0.5, 0, ls};
+Point(6) = {1.2, 0.5, 0, ls};
+Point(7) = {1.2, 1.0, 0, ls};
+Point(8) = {0.7, 1.0, 0, ls};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Line(5) = {5, 6};
+Line(6) = {6, 7};
+Line(7) = {7, 8};
+Line(8) = {8, 5};
+Curve Loop(1) = {1, 2, 3, 4};
+Curve Loop(2) = {5, 6, 7, 8};
+Plane Surface(1) = {1, 2};
+Field[1] = BoundaryLayer;
+Field[1].CurvesList = {5, 6, 7, 8};
+Field[1].Size = 0.004;
+Field[1].Ratio = 1.25;
+Field[1].Thickness = 0.03;
+Field[1].FanPointsList = {6, 7};
+BoundaryLayer Field = 1;
