@@ -8,6 +8,7 @@
 #include <span>
 #include <sstream>
 
+#include "kernel/extrusion_motion.h"
 #include "mesh/core/quality.h"
 #include "mesh/high_order/jacobian.h"
 
@@ -62,6 +63,46 @@ void addCurvedValidity(const Mesh& mesh, MeshSummary& s) {
     }
 }
 
+bool grownAlongNormals(const std::optional<ExtrusionRecord>& extrusion) {
+  return extrusion && extrusion->motion &&
+         extrusion->motion->kind == ExtrusionMotion::Kind::Normals;
+}
+
+// The first `count` elements of a block, or all of them (count = npos).
+void addLayerQuality(const Mesh& mesh, const ElementBlock& block, std::size_t count,
+                     MeshSummary& s, double& total) {
+  count = std::min(count, block.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const double q = cornerScaledJacobian(block.type, elementNodes(mesh, block.element(i)));
+    s.layerMinJacobian = s.layerElements == 0 ? q : std::min(s.layerMinJacobian, q);
+    ++s.layerElements;
+    total += q;
+  }
+}
+
+// The layer elements of the highest dimension that has any.
+void addLayers(const Model& model, const Mesh& mesh, MeshSummary& s) {
+  double total = 0;
+  for (int dim = 3; dim >= 2 && s.layerElements == 0; --dim)
+    for (const auto& [id, em] : mesh.entities()) {
+      if (id.dim != dim) continue;
+      const ModelVolume* volume = dim == 3 ? model.volume(id.tag) : nullptr;
+      const ModelSurface* surface = dim == 2 ? model.surface(id.tag) : nullptr;
+      const bool grown = (volume && grownAlongNormals(volume->extrusion)) ||
+                         (surface && grownAlongNormals(surface->extrusion));
+      for (const ElementBlock& block : em.blocks) {
+        if (dimension(block.type) != dim) continue;
+        if (grown)
+          addLayerQuality(mesh, block, block.size(), s, total);
+        else if (em.layer && family(block.type) == ElementFamily::Triangle)
+          addLayerQuality(mesh, block, em.layer->triangles, s, total);
+        else if (em.layer && family(block.type) == ElementFamily::Quad)
+          addLayerQuality(mesh, block, em.layer->quadrangles, s, total);
+      }
+    }
+  if (s.layerElements > 0) s.layerMeanJacobian = total / static_cast<double>(s.layerElements);
+}
+
 void addGroups(const Model& model, const Mesh& mesh, MeshSummary& s) {
   for (const auto& [id, group] : model.physicalGroups()) {
     MeshSummary::Group g{group.dim, group.tag, group.name, 0};
@@ -95,6 +136,7 @@ MeshSummary summarizeMesh(const Model& model, const Mesh& mesh) {
   addMeasures(mesh, s);
   addCurvedValidity(mesh, s);
   addGroups(model, mesh, s);
+  addLayers(model, mesh, s);
   // Quality of the highest-dimensional elements present.
   for (int dim = 3; dim >= 2; --dim) {
     QualityStats q = meshQuality(mesh, dim, QualityMeasure::Gamma);
@@ -137,6 +179,15 @@ std::string formatCurvedValidity(const MeshSummary& s) {
   os.precision(4);
   os << "curved elements: scaled Jacobian min " << s.minScaledJacobian << ", "
      << s.invalidElements << " invalid";
+  return os.str();
+}
+
+std::string formatLayerQuality(const MeshSummary& s) {
+  if (s.layerElements == 0) return {};
+  std::ostringstream os;
+  os.precision(4);
+  os << "boundary layer: " << plural(s.layerElements, "element") << ", scaled Jacobian min "
+     << s.layerMinJacobian << ", mean " << s.layerMeanJacobian;
   return os.str();
 }
 

@@ -109,6 +109,7 @@ void generate(const CommandLine& cl, Session& session, const MeshFormat& format,
 void logSummary(const MeshSummary& summary, ConsoleLog& log) {
   log.info(formatSummary(summary));
   if (summary.highOrder) log.info(formatCurvedValidity(summary));
+  if (summary.layerElements > 0) log.info(formatLayerQuality(summary));
 }
 
 void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {

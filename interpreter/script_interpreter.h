@@ -194,7 +194,7 @@ class Interpreter {
   std::vector<double> shapeArguments(const ast::Expr& shape);
   AffineMap transformMap(const ast::Expr& shape);
   ExtrusionLayers extrusionLayers(const ast::ShapePart& block);
-  int layerIndex(const ast::ShapePart& block);
+  ExtrusionMotion normalsMotion(const ast::ShapePart& block);
   std::vector<EntityId> extrude(const ast::Expr& shape);
   std::optional<std::vector<EntityId>> shapeOperation(const ast::Expr& shape);
   void executeShapeOperation(const ast::CommandStmt& command, const SourceLocation& where);

@@ -107,20 +107,23 @@ AffineMap Interpreter::transformMap(const ast::Expr& shape) {
   return map;
 }
 
-// Using Index[i] in an extrusion along normals: layers of one index share their normals.
-int Interpreter::layerIndex(const ast::ShapePart& block) {
-  int index = 0;
+// Using Index[i] and Using View[v] in an extrusion along normals: layers of one index share
+// their normals; a view sets the layer's thickness (scalar) or direction (vector) per node.
+ExtrusionMotion Interpreter::normalsMotion(const ast::ShapePart& block) {
+  ExtrusionMotion motion = ExtrusionMotion::normals(0);
   for (const auto& item : block.items) {
     if (item->words.size() != 2 || item->words[0] != "Using" || item->args.empty()) continue;
-    if (item->words[1] == "Index") {
-      index = clampedInteger<int>(evaluateNumber(*item->args[0]));
-      if (index < 0) fail(item->loc, "Using Index takes a number from 0");
-    } else {
+    const int value = clampedInteger<int>(evaluateNumber(*item->args[0]));
+    if (value < 0) fail(item->loc, "Using " + item->words[1] + " takes a number from 0");
+    if (item->words[1] == "Index")
+      motion.layerIndex = value;
+    else if (item->words[1] == "View")
+      motion.layerView = value;
+    else
       warn(item->loc, "'Using " + item->words[1] +
                           "' is not supported in an extrusion along normals; ignored");
-    }
   }
-  return index;
+  return motion;
 }
 
 ExtrusionLayers Interpreter::extrusionLayers(const ast::ShapePart& block) {
@@ -148,7 +151,7 @@ std::vector<EntityId> Interpreter::extrude(const ast::Expr& shape) {
   const std::vector<double> v = shapeArguments(shape);
   ExtrusionMotion motion;
   if (shape.parts.size() == 1)  // Extrude{ shapes; Layers{..}; }: a boundary layer
-    motion = ExtrusionMotion::normals(layerIndex(shape.parts[0]));
+    motion = normalsMotion(shape.parts[0]);
   else if (v.size() == 3)
     motion = ExtrusionMotion::translate({v[0], v[1], v[2]});
   else if (v.size() == 7)

@@ -45,6 +45,13 @@ struct EntityMesh {
   std::vector<double> parametric;
   std::vector<ElementBlock> blocks;
   std::optional<PeriodicLink> periodic;
+  // A 2D boundary layer's share of a surface's mesh: its nodes are the first `nodes` of
+  // `nodes`, its elements the first `triangles` and `quadrangles` of those blocks. Meshers
+  // that rewrite the surface's elements afterwards keep that order or drop the record.
+  struct LayerPart {
+    std::size_t nodes = 0, triangles = 0, quadrangles = 0;
+  };
+  std::optional<LayerPart> layer;
 
   ElementBlock& block(ElementType type);  // finds or appends
   const ElementBlock* findBlock(ElementType type) const;

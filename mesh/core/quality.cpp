@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/core/element_corners.h"
+
 namespace geomesh {
 namespace {
 
@@ -148,6 +150,70 @@ double elementMeasure(const Mesh& mesh, ElementType type, std::span<const NodeIn
       return prismVolume(p(0), p(1), p(2), p(4), p(5), p(6)) +
              prismVolume(p(0), p(2), p(3), p(4), p(6), p(7));
     default: return 0;
+  }
+}
+
+namespace {
+
+// The unit vector from a to b (zero when they coincide).
+Vec3 unitEdge(Vec3 a, Vec3 b) {
+  const double l = distance(a, b);
+  return l > 0 ? (b - a) / l : Vec3{};
+}
+
+double tripleAt(std::span<const Vec3> v, const std::array<int, 4>& c) {
+  return dot(unitEdge(v[c[0]], v[c[1]]),
+             cross(unitEdge(v[c[0]], v[c[2]]), unitEdge(v[c[0]], v[c[3]])));
+}
+
+// The smallest scaled cross product at the corners of a polygon, along its mean normal.
+double polygonCorners(std::span<const Vec3> v, double ideal) {
+  const std::size_t n = v.size();
+  Vec3 normal{};
+  for (std::size_t k = 0; k < n; ++k) normal = normal + cross(v[k], v[(k + 1) % n]);
+  const double length = norm(normal);
+  if (!(length > 0)) return 0;
+  normal = normal / length;
+  double worst = 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 a = unitEdge(v[k], v[(k + 1) % n]), b = unitEdge(v[k], v[(k + n - 1) % n]);
+    worst = std::min(worst, dot(cross(a, b), normal) / ideal);
+  }
+  return worst;
+}
+
+}  // namespace
+
+double cornerScaledJacobian(ElementType type, std::span<const Vec3> nodes) {
+  const ElementFamily f = family(type);
+  const std::span<const Vec3> v = nodes.first(std::min<std::size_t>(nodes.size(), vertexCount(f)));
+  const double sin60 = std::sqrt(3.0) / 2;
+  switch (f) {
+    case ElementFamily::Triangle: return std::min(1.0, polygonCorners(v, sin60));
+    case ElementFamily::Quad: return std::min(1.0, polygonCorners(v, 1));
+    case ElementFamily::Pyramid: {
+      // At each base corner: the two base edges and the edge to the apex (equilateral
+      // faces: sin 45 degrees).
+      double worst = 1;
+      for (std::size_t k = 0; k < 4; ++k) {
+        const Vec3 corner[4] = {v[k], v[(k + 1) % 4], v[(k + 3) % 4], v[4]};
+        worst = std::min(worst, tripleAt(corner, {0, 1, 2, 3}) / (std::sqrt(2.0) / 2));
+      }
+      return std::min(1.0, worst);
+    }
+    case ElementFamily::Tet:
+    case ElementFamily::Prism:
+    case ElementFamily::Hex: {
+      const double ideal = f == ElementFamily::Tet ? 1 / std::sqrt(2.0)
+                           : f == ElementFamily::Prism     ? sin60
+                                                           : 1;
+      const ElementType linear = linearType(f);
+      double worst = 1;
+      for (const std::array<int, 4>& corner : cornerNeighbours(linear))
+        worst = std::min(worst, tripleAt(v, corner) / ideal);
+      return std::min(1.0, worst);
+    }
+    default: return 1;
   }
 }
 

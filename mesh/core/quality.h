@@ -28,6 +28,14 @@ double tetMeanRatioCubed(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 inline constexpr double kSureMeanRatioCubed = 1e-6;
 double tetSicn(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
+// The scaled Jacobian at the corners of a first-order element (its first vertexCount nodes):
+// the smallest over its corners of the triple product (in 2D, the cross product along the
+// element's normal) of the unit edge vectors leaving the corner, scaled so that the ideal
+// element (equilateral triangle or tetrahedron, square, right prism over an equilateral
+// triangle, cube) has 1, and capped at 1. Negative at an inverted corner; 1 for points and
+// lines. Pyramids: the four corners of the base.
+double cornerScaledJacobian(ElementType type, std::span<const Vec3> nodes);
+
 enum class QualityMeasure { Gamma, Sicn };
 
 struct QualityStats {

@@ -67,9 +67,9 @@ void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fi
 // Curves in meshingOrder: sweeps and copies after what they copy. The curves of boundary
 // layers grown from surfaces wait for them (`layers`: those alone, else all the others).
 void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fields,
-                Mesh& mesh, bool layers = false) {
+                const post::ViewStore* views, Mesh& mesh, bool layers = false) {
   const std::map<int, Periodicity> links = periodicCurves(model);
-  const ExtrusionMesher extruded(model);
+  const ExtrusionMesher extruded(model, views);
   const PeriodicCopier periodic(model);
   std::vector<int> followers;  // curves that end where a boundary layer moves their ends
   for (const PlannedEntity& p : meshingOrder(model, 1, links)) {
@@ -122,6 +122,42 @@ std::vector<std::uint64_t> edgesToKeep(const ModelSurface& surface, const Mesh& 
           keys.push_back(edgeKey(lines->element(e)[0], lines->element(e)[1]));
   std::sort(keys.begin(), keys.end());
   return keys;
+}
+
+// The part of a surface's mesh beyond its boundary layer (EntityMesh::layer): its own
+// nodes and elements, taken out of `em`, which keeps the layer's.
+EntityMesh restBeyondLayer(EntityMesh& em) {
+  const EntityMesh::LayerPart part = *em.layer;
+  EntityMesh rest;
+  rest.entity = em.entity;
+  rest.nodes.assign(em.nodes.begin() + static_cast<std::ptrdiff_t>(part.nodes), em.nodes.end());
+  em.nodes.resize(part.nodes);
+  if (em.parametric.size() >= 2 * part.nodes) {
+    rest.parametric.assign(em.parametric.begin() + static_cast<std::ptrdiff_t>(2 * part.nodes),
+                           em.parametric.end());
+    em.parametric.resize(2 * part.nodes);
+  }
+  for (ElementBlock& block : em.blocks) {
+    const std::size_t kept = block.type == ElementType::Triangle3 ? part.triangles
+                             : block.type == ElementType::Quad4   ? part.quadrangles
+                                                                  : block.size();
+    const std::size_t split = kept * nodeCount(block.type);
+    ElementBlock& moved = rest.block(block.type);
+    moved.nodes.assign(block.nodes.begin() + static_cast<std::ptrdiff_t>(split), block.nodes.end());
+    block.nodes.resize(split);
+  }
+  return rest;
+}
+
+// Puts the rest of a surface's mesh back after its boundary layer's, in that order.
+void joinLayerAndRest(EntityMesh& em, EntityMesh rest) {
+  em.nodes.insert(em.nodes.end(), rest.nodes.begin(), rest.nodes.end());
+  em.parametric.insert(em.parametric.end(), rest.parametric.begin(), rest.parametric.end());
+  for (const ElementBlock& block : rest.blocks) {
+    ElementBlock& into = em.block(block.type);
+    into.nodes.insert(into.nodes.end(), block.nodes.begin(), block.nodes.end());
+  }
+  std::erase_if(em.blocks, [](const ElementBlock& b) { return b.nodes.empty(); });
 }
 
 // What the 2D stage reads.
@@ -179,7 +215,15 @@ void meshOneSurface(const SurfaceStage& stage, const ModelSurface& surface, Mesh
   settings.topologyPasses = options.recombineOptimizeTopology;
   settings.repositionNodes = options.recombineNodeRepositioning;
   settings.smoothingPasses = std::max(options.smoothing, 1) * 3;
-  recombineSurface(*surface.geometry, mesh, em, settings, edgesToKeep(surface, mesh));
+  if (!em.layer) {
+    recombineSurface(*surface.geometry, mesh, em, settings, edgesToKeep(surface, mesh));
+    return;
+  }
+  // A boundary layer stays as it was built: only the rest of the surface is recombined, its
+  // nodes on the layer's fronts held still.
+  EntityMesh rest = restBeyondLayer(em);
+  recombineSurface(*surface.geometry, mesh, rest, settings, edgesToKeep(surface, mesh));
+  joinLayerAndRest(em, std::move(rest));
 }
 
 // Mesh.RecombinationAlgorithm 2 and 3: simple or blossom, then split into quadrangles.
@@ -208,7 +252,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
   if (options.subdivisionAlgorithm == 3)
     log.warning("Mesh.SubdivisionAlgorithm " + std::to_string(options.subdivisionAlgorithm) +
                 " is not available; elements are not split");
-  const ExtrusionMesher extruded(model);
+  const ExtrusionMesher extruded(model, options.views);
   const PeriodicCopier periodic(model);
   // Boundary layers grown from surfaces (their curves too) come once those surfaces are meshed.
   std::vector<PlannedEntity> layers;
@@ -230,7 +274,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
       meshPlanned(p);
   }
   if (!layers.empty()) {
-    meshCurves(model, stage.rules, stage.fields, mesh, true);
+    meshCurves(model, stage.rules, stage.fields, options.views, mesh, true);
     for (const PlannedEntity& p : layers) meshPlanned(p);
   }
   for (const std::string& line : extruded.layerWarnings()) log.warning(line);
@@ -310,7 +354,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
     const StageTimer timer(1);
-    meshCurves(model, rules, fields, mesh);
+    meshCurves(model, rules, fields, options.views, mesh);
     timer.done(log, mesh.elementCount(1), "lines");
   }
   if (dim >= 2) {
@@ -326,7 +370,7 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   }
   if (dim >= 3) {
     const StageTimer timer(3);
-    const ExtrusionMesher extruded(model);
+    const ExtrusionMesher extruded(model, options.views);
     for (const std::string& touching : touchingVolumes(model, mesh)) log.warning(touching);
     const VolumeAlgorithm& volume = volumeAlgorithmFor(options.algorithm3D);
     const std::string why = volumeAlgorithmUnavailable(options.algorithm3D);

@@ -3,6 +3,7 @@
 // into 8.
 #include "mesh/quads/subdivision.h"
 
+#include "mesh/core/element_corners.h"
 #include "mesh/quads/recombine.h"
 
 #include <algorithm>
@@ -131,31 +132,25 @@ void splitCurvesAndSurfaces(const Model& model, Mesh& mesh, EdgeMiddles& middles
                             FaceCentres& centres) {
   for (const auto& entry : model.curves()) splitCurve(entry.second, mesh, middles);
   for (const auto& entry : model.surfaces())
-    if (mesh.find({2, entry.first})) SurfaceSplitter(entry.second, mesh, middles, centres).run();
+    if (mesh.find({2, entry.first})) {
+      SurfaceSplitter(entry.second, mesh, middles, centres).run();
+      mesh.entity({2, entry.first}).layer.reset();  // its elements are split apart
+    }
 }
 
-// A volume element's corners, each with its three neighbours along edges in right-handed
-// order (the hexahedron at the corner then has a positive Jacobian), and its faces.
+// A volume element's corners (cornerNeighbours) and its faces.
 struct CellShape {
-  std::vector<std::array<int, 4>> corners;  // (corner, a, b, c)
+  std::span<const std::array<int, 4>> corners;  // (corner, a, b, c)
   std::vector<std::vector<int>> faces;
 };
 
 const CellShape& cellShape(ElementType type) {
-  static const CellShape tet{{{0, 1, 2, 3}, {1, 0, 3, 2}, {2, 3, 0, 1}, {3, 2, 1, 0}},
+  static const CellShape tet{cornerNeighbours(ElementType::Tet4),
                              {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
-  static const CellShape prism{
-      {{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5}, {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}},
-      {{0, 1, 2}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {0, 2, 5, 3}}};
+  static const CellShape prism{cornerNeighbours(ElementType::Prism6),
+                               {{0, 1, 2}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {0, 2, 5, 3}}};
   static const CellShape hex{
-      {{0, 1, 3, 4},
-       {1, 2, 0, 5},
-       {2, 3, 1, 6},
-       {3, 0, 2, 7},
-       {4, 7, 5, 0},
-       {5, 4, 6, 1},
-       {6, 5, 7, 2},
-       {7, 6, 4, 3}},
+      cornerNeighbours(ElementType::Hex8),
       {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 3, 7, 4}}};
   return type == ElementType::Tet4 ? tet : type == ElementType::Prism6 ? prism : hex;
 }

@@ -61,7 +61,7 @@ std::vector<double> sweepFractions(const ExtrusionRecord& record, EntityId id) {
 Vec3 sweptPoint(const Sweep& s, const ExtrusionRecord& record, Vec3 p, double f, EntityId id) {
   if (!isBoundaryLayer(record)) return record.motion->apply(p, f);
   if (!s.normals) throw MeshError(id, "its boundary layer has no normals to grow along");
-  return s.normals->moved(s.mesh, record.motion->layerIndex, p,
+  return s.normals->moved(s.mesh, record.motion->layerIndex, record.motion->layerView, p,
                           f * record.layers.heights.back(), id);
 }
 
@@ -351,8 +351,8 @@ bool isMeshed(const Mesh& mesh, EntityId e) {
 
 bool isLayeredExtrusion(const ModelVolume& volume) { return hasLayers(volume.extrusion); }
 
-ExtrusionMesher::ExtrusionMesher(const Model& model)
-    : model_(model), normals_(std::make_unique<LayerNormals>(model)) {
+ExtrusionMesher::ExtrusionMesher(const Model& model, const post::ViewStore* views)
+    : model_(model), normals_(std::make_unique<LayerNormals>(model, views)) {
   const BoundingBox box = model.boundingBox();
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);

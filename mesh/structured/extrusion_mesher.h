@@ -12,6 +12,10 @@
 
 namespace geomesh {
 
+namespace post {
+class ViewStore;
+}
+
 // Structured meshes of entities extruded with Layers{..} (and Recombine): a curve swept by a
 // point gets one segment per layer element; a surface swept by a curve gets the source
 // curve's nodes swept layer by layer (quadrangles, or each cut into two triangles); a volume
@@ -27,7 +31,8 @@ namespace geomesh {
 // neighbouring prisms and the lateral surfaces agree without looking at each other.
 class ExtrusionMesher {
  public:
-  explicit ExtrusionMesher(const Model& model);
+  // `views`: the session's, for boundary layers extruded Using View[v] (may be null).
+  explicit ExtrusionMesher(const Model& model, const post::ViewStore* views = nullptr);
 
   // Whether the curve, surface or volume is itself extruded with layers (a sweep).
   bool sweeps(EntityId id) const;

@@ -8,8 +8,10 @@
 #include <string>
 
 #include "mesh/core/mesh_error.h"
+#include "mesh/sizes/view_size.h"
 #include "mesh/structured/layer_shrinking.h"
 #include "mesh/structured/swept_volume.h"
+#include "mesh/views/view_probe.h"
 
 namespace geomesh {
 
@@ -49,7 +51,8 @@ void addFace(const Mesh& mesh, std::span<const NodeIndex> f,
 
 }  // namespace
 
-LayerNormals::LayerNormals(const Model& model) : model_(model) {
+LayerNormals::LayerNormals(const Model& model, const post::ViewStore* views)
+    : views_(views) {
   const BoundingBox box = model.boundingBox();
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
@@ -150,7 +153,27 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
   return *fields_.emplace(index, std::move(made)).first->second;
 }
 
-Vec3 LayerNormals::moved(const Mesh& mesh, int index, Vec3 p, double height,
+// The direction a node moves along per unit height under Using View[v]: a scalar view's
+// value times the normal, or a vector view's vector.
+Vec3 LayerNormals::viewDirection(int view, Vec3 p, Vec3 normal, EntityId asking) const {
+  auto probe = probes_.find(view);
+  if (probe == probes_.end()) {
+    const post::View* v = viewNamed(views_, view, -1);
+    if (!v)
+      throw MeshError(asking, "its boundary layer is extruded Using View[" + std::to_string(view) +
+                                  "], and there is no view at index " + std::to_string(view));
+    probe = probes_.emplace(view, std::make_unique<post::ViewProbe>(*v)).first;
+  }
+  int count = 0;
+  std::optional<std::array<double, 9>> c = probe->second->components(p, &count);
+  if (!c) c = probe->second->nearestComponents(p, &count);
+  if (!c)
+    throw MeshError(asking, "View[" + std::to_string(view) + "], which sets its boundary layer, "
+                                "holds no value");
+  return count == 3 ? Vec3{(*c)[0], (*c)[1], (*c)[2]} : (*c)[0] * normal;
+}
+
+Vec3 LayerNormals::moved(const Mesh& mesh, int index, int view, Vec3 p, double height,
                          EntityId asking) const {
   const Field& f = field(mesh, index, asking);
   const std::optional<NodeIndex> node = f.locator.find(p);
@@ -161,7 +184,8 @@ Vec3 LayerNormals::moved(const Mesh& mesh, int index, Vec3 p, double height,
   if (norm(unit) == 0)
     throw MeshError(asking, "the normals of the faces its boundary layer grows from cancel at "
                             "node " + std::to_string(*node + 1));
-  return p + height * f.shrinking.factor.at(*node) * unit;
+  const Vec3 direction = view >= 0 ? viewDirection(view, p, unit, asking) : unit;
+  return p + height * f.shrinking.factor.at(*node) * direction;
 }
 
 }  // namespace geomesh

@@ -16,6 +16,10 @@ namespace geomesh {
 namespace extrusion {
 class NodeLocator;
 }
+namespace post {
+class ViewStore;
+class ViewProbe;
+}  // namespace post
 
 // The unit normals at the nodes of the sources of the boundary layers (extrusions along
 // normals) of each index of Using Index: at a node, the mean of the unit normals of the faces
@@ -27,7 +31,8 @@ class NodeLocator;
 // thickest layer of its index would cross itself (shrinkLayer).
 class LayerNormals {
  public:
-  explicit LayerNormals(const Model& model);
+  // `views`: the session's, for layers extruded Using View[v] (may be null).
+  LayerNormals(const Model& model, const post::ViewStore* views);
   ~LayerNormals();
   LayerNormals(const LayerNormals&) = delete;
   LayerNormals& operator=(const LayerNormals&) = delete;
@@ -38,7 +43,10 @@ class LayerNormals {
   // p, a node of a source of the layers of `index`, moved `height` along its normal. The
   // normals of an index are computed from the mesh on first use: its sources must be meshed.
   // Throws MeshError naming `asking` when p is no source node or its normal is undefined.
-  Vec3 moved(const Mesh& mesh, int index, Vec3 p, double height, EntityId asking) const;
+  // With `view` >= 0 (Using View[view]), the view's value at p scales the height (a scalar
+  // view) or its vector replaces the normal (a vector view).
+  Vec3 moved(const Mesh& mesh, int index, int view, Vec3 p, double height,
+             EntityId asking) const;
 
   // Where the layers computed so far had to be made thinner than asked (see shrinkLayer),
   // one line per index, in index order.
@@ -47,13 +55,15 @@ class LayerNormals {
  private:
   struct Field;
   const Field& field(const Mesh& mesh, int index, EntityId asking) const;
+  Vec3 viewDirection(int view, Vec3 p, Vec3 normal, EntityId asking) const;
 
-  const Model& model_;
   double tolerance_ = 0;
   std::map<int, std::set<int>> surfaces_;  // index -> source surfaces
   std::map<int, std::set<int>> curves_;    // index -> source curves
   std::map<int, double> heights_;  // index -> the height of its thickest layer (signed)
   mutable std::map<int, std::unique_ptr<Field>> fields_;
+  const post::ViewStore* views_ = nullptr;
+  mutable std::map<int, std::unique_ptr<post::ViewProbe>> probes_;  // view index -> probe
 };
 
 }  // namespace geomesh

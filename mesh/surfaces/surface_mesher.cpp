@@ -461,7 +461,7 @@ Metric2 backgroundMetric(const SurfaceGeometry& g, const WorkFrame& frame,
   return outOfFrame(m, surface);
 }
 
-// The boundary layer's elements beside the rest of the surface's.
+// The boundary layer's elements, first in their blocks (EntityMesh::layer).
 void addLayerElements(const SurfaceLayer& layer, EntityMesh& em) {
   if (!layer.triangles.empty()) {
     ElementBlock& triangles = em.block(ElementType::Triangle3);
@@ -564,8 +564,13 @@ void meshSurfaceOnce(const Model& model, const ModelSurface& surface, const Size
     em.parametric.clear();
   }
   em.blocks.clear();
+  em.layer.reset();
+  if (layer) {
+    em.layer = EntityMesh::LayerPart{em.nodes.size(), layer->triangles.size() / 3,
+                                     layer->quadrangles.size() / 4};
+    addLayerElements(*layer, em);
+  }
   storeMesh(planar, in, frame, g, em, mesh);
-  if (layer) addLayerElements(*layer, em);
 }
 
 }  // namespace
