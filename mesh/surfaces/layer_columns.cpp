@@ -125,21 +125,106 @@ bool validCell(const std::vector<Vec2>& corners, bool domainLeft, double scale) 
   return true;
 }
 
-bool shortenInvalidCells(const LayerWall& wall, WallColumns& columns) {
+// The two columns a cell lies between.
+LayerColumn& columnA(WallColumns& columns, const LayerCell& cell) {
+  return columns[cell.node][cell.a];
+}
+LayerColumn& columnB(const LayerWall& wall, WallColumns& columns, const LayerCell& cell) {
+  return columns[cell.acrossSegment ? following(cell.node, wall.xy.size()) : cell.node][cell.b];
+}
+
+// Removes the cell and those above it from both its columns.
+void cutAt(const LayerWall& wall, WallColumns& columns, const LayerCell& cell) {
+  LayerColumn& a = columnA(columns, cell);
+  LayerColumn& b = columnB(wall, columns, cell);
+  a.levels = std::min(a.levels, cell.level);
+  b.levels = std::min(b.levels, cell.level);
+}
+
+double wallScale(const LayerWall& wall) {
   double scale = 0;
   for (std::size_t k = 0; k < wall.xy.size(); ++k)
     scale = std::max(scale, length(minus(wall.xy[k], wall.xy[following(k, wall.xy.size())])));
+  return scale;
+}
+
+bool shortenInvalidCells(const LayerWall& wall, WallColumns& columns) {
+  const double scale = wallScale(wall);
   bool changed = false;
   forEachCell(wall, columns, [&](const LayerCell& cell) {
     if (validCell(cellCorners(wall, columns, cell), wall.domainLeft, scale)) return;
-    LayerColumn& a = columns[cell.node][cell.a];
-    LayerColumn& b =
-        columns[cell.acrossSegment ? following(cell.node, wall.xy.size()) : cell.node][cell.b];
-    a.levels = std::min(a.levels, cell.level);
-    b.levels = std::min(b.levels, cell.level);
+    cutAt(wall, columns, cell);
     changed = true;
   });
   return changed;
+}
+
+// Whether two convex polygons overlap by more than `tiny` along every separating direction
+// (their edges' normals): cells that only share an edge or a corner do not.
+bool overlapping(const std::vector<Vec2>& p, const std::vector<Vec2>& q, double tiny) {
+  for (const std::vector<Vec2>* poly : {&p, &q})
+    for (std::size_t k = 0; k < poly->size(); ++k) {
+      const Vec2 edge = minus((*poly)[(k + 1) % poly->size()], (*poly)[k]);
+      const double l = length(edge);
+      if (!(l > 0)) continue;
+      const Vec2 normal{-edge.v / l, edge.u / l};
+      double pLow = 1e300, pHigh = -1e300, qLow = 1e300, qHigh = -1e300;
+      for (Vec2 v : p) {
+        pLow = std::min(pLow, dot2(v, normal));
+        pHigh = std::max(pHigh, dot2(v, normal));
+      }
+      for (Vec2 v : q) {
+        qLow = std::min(qLow, dot2(v, normal));
+        qHigh = std::max(qHigh, dot2(v, normal));
+      }
+      if (std::min(pHigh, qHigh) - std::max(pLow, qLow) <= tiny) return false;
+    }
+  return true;
+}
+
+// Cuts the columns of every two cells (of any walls) that overlap: the layers of two walls
+// meeting at a concave corner, or of walls facing each other, which the rays of `reach` do
+// not see when the columns run alongside the other wall. Cells are swept in order of their
+// smallest abscissa.
+bool shortenOverlappingCells(std::span<const LayerWall> walls, std::span<WallColumns> columns) {
+  struct Placed {
+    std::size_t wall;
+    LayerCell cell;
+    std::vector<Vec2> corners;
+    double xLow, xHigh, yLow, yHigh;
+  };
+  std::vector<Placed> cells;
+  double scale = 0;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    scale = std::max(scale, wallScale(walls[w]));
+    forEachCell(walls[w], columns[w], [&](const LayerCell& cell) {
+      std::vector<Vec2> corners = cellCorners(walls[w], columns[w], cell);
+      if (corners.size() < 3) return;
+      Placed placed{w, cell, std::move(corners), 1e300, -1e300, 1e300, -1e300};
+      for (Vec2 v : placed.corners) {
+        placed.xLow = std::min(placed.xLow, v.u);
+        placed.xHigh = std::max(placed.xHigh, v.u);
+        placed.yLow = std::min(placed.yLow, v.v);
+        placed.yHigh = std::max(placed.yHigh, v.v);
+      }
+      cells.push_back(std::move(placed));
+    });
+  }
+  std::sort(cells.begin(), cells.end(),
+            [](const Placed& a, const Placed& b) { return a.xLow < b.xLow; });
+  const double tiny = 1e-9 * scale;
+  std::vector<std::size_t> cut;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    for (std::size_t j = i + 1; j < cells.size() && cells[j].xLow < cells[i].xHigh - tiny; ++j) {
+      const Placed& a = cells[i];
+      const Placed& b = cells[j];
+      if (a.yHigh - tiny <= b.yLow || b.yHigh - tiny <= a.yLow) continue;
+      if (!overlapping(a.corners, b.corners, tiny)) continue;
+      cut.push_back(i);
+      cut.push_back(j);
+    }
+  for (std::size_t i : cut) cutAt(walls[cells[i].wall], columns[cells[i].wall], cells[i].cell);
+  return !cut.empty();
 }
 
 }  // namespace
@@ -207,10 +292,12 @@ std::vector<Vec2> limitColumns(std::span<const LayerWall> walls, std::span<WallC
         while (c.levels > 0 && c.heights[c.levels - 1] > limit) --c.levels;
       }
     }
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    constexpr int kMaxPasses = 1000;
-    for (int pass = 0; pass < kMaxPasses && shortenInvalidCells(walls[w], columns[w]); ++pass) {
-    }
+  // Each pass removes at least one cell: the passes end.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      while (shortenInvalidCells(walls[w], columns[w])) changed = true;
+    if (shortenOverlappingCells(walls, columns)) changed = true;
   }
   std::vector<Vec2> shortened;
   for (std::size_t w = 0; w < walls.size(); ++w)

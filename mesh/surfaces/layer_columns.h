@@ -62,9 +62,10 @@ std::vector<Vec2> cellCorners(const LayerWall& wall, const WallColumns& columns,
                               const LayerCell& cell);
 
 // Shortens the columns so that none reaches further than 0.45 of the way to a wall segment
-// that does not touch it (facing layers then stop short of each other), and none makes an
-// inverted or non-convex cell with its neighbours. Returns the bases of the shortened
-// columns.
+// that does not touch it (facing layers then stop short of each other), none makes an
+// inverted or non-convex cell with its neighbours, and no two cells overlap (the layers of
+// two walls meeting at a concave corner, where the columns near it run alongside the other
+// wall's layer). Returns the bases of the shortened columns.
 std::vector<Vec2> limitColumns(std::span<const LayerWall> walls, std::span<WallColumns> columns);
 
 }  // namespace geomesh

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "api/meshing.h"
 #include "tests/interpreter/script_runner.h"
@@ -181,6 +183,61 @@ TEST(BoundaryLayerExtrusion, CurvesGrowAlongTheirNormalsInThePlane) {
   // the layer lies at the circle's radius plus a height of Layers.
   EXPECT_EQ(radii, (std::set<long long>{500000000, 510000000, 530000000, 570000000}));
   EXPECT_GT(mesh.elementCount(2), 0u);
+}
+
+// The highest node, and the heights of the layer's top over the line y = 0.5, of a layer of
+// height 0.1 grown from the unit square Using View[0].
+struct ViewLayer {
+  double zmax = 0, xmax = 0;
+  std::vector<double> middle;  // the heights of the nodes at y = 0.5
+};
+
+ViewLayer layerUsingView(const std::string& view) {
+  ScriptRun run;
+  run.run(std::string(kSquare) + view +
+          "Extrude{ Surface{1}; Layers{1, 0.1}; Using View[0]; Recombine; }\n");
+  api::generate(run.session, 3);
+  const Mesh& mesh = run.session.mesh();
+  ViewLayer out;
+  std::set<double> middle;
+  for (NodeIndex n = 0; n < mesh.nodeCount(); ++n) {
+    const Vec3 p = mesh.node(n);
+    out.zmax = std::max(out.zmax, p.z);
+    out.xmax = std::max(out.xmax, p.x);
+    if (std::abs(p.y - 0.5) < 1e-9) middle.insert(std::round(p.z * 1e9) / 1e9);
+  }
+  out.middle.assign(middle.begin(), middle.end());
+  return out;
+}
+
+TEST(BoundaryLayerExtrusion, AScalarViewScalesTheHeightAtEachNode) {
+  // The view is 1 along y = 0 and 3 along y = 1: the layer is 0.1 thick at the bottom, 0.2
+  // across the middle and 0.3 at the top.
+  const ViewLayer layer =
+      layerUsingView("View \"scale\" { SQ(0,0,0, 1,0,0, 1,1,0, 0,1,0){1, 1, 3, 3}; };\n");
+  EXPECT_NEAR(layer.zmax, 0.3, 1e-9);
+  EXPECT_NEAR(layer.xmax, 1, 1e-12);
+  EXPECT_EQ(layer.middle, (std::vector<double>{0, 0.2}));
+}
+
+TEST(BoundaryLayerExtrusion, AVectorViewSetsTheDirection) {
+  // Every node moves 0.1 along (1, 0, 1): the layer leans over x = 1 and stays 0.1 high.
+  const ViewLayer layer = layerUsingView(
+      "View \"lean\" { VQ(0,0,0, 1,0,0, 1,1,0, 0,1,0){1,0,1, 1,0,1, 1,0,1, 1,0,1}; };\n");
+  EXPECT_NEAR(layer.zmax, 0.1, 1e-12);
+  EXPECT_NEAR(layer.xmax, 1.1, 1e-12);
+  EXPECT_EQ(layer.middle, (std::vector<double>{0, 0.1}));
+}
+
+TEST(BoundaryLayerExtrusion, AMissingViewIsAnErrorNamingItsIndex) {
+  ScriptRun run;
+  run.run(std::string(kSquare) + "Extrude{ Surface{1}; Layers{1, 0.1}; Using View[4]; }\n");
+  try {
+    api::generate(run.session, 3);
+    FAIL() << "meshing without the view succeeded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("no view at index 4"), std::string::npos) << e.what();
+  }
 }
 
 TEST(BoundaryLayerExtrusion, TheOpenCascadeFactoryNamesTheKernelItNeeds) {

@@ -148,6 +148,35 @@ TEST(BoundaryLayer2D, WithoutQuadsEachCellIsTwoTriangles) {
   EXPECT_NEAR(f.area, 0.4, 1e-9);
 }
 
+TEST(BoundaryLayer2D, RecombineSurfaceKeepsTheLayerAndRecombinesTheRest) {
+  Model model = channel(0.4, 0.05);
+  addLayer(model, {{"CurvesList", {1}},
+                   {"Size", {0.01}},
+                   {"Ratio", {1.2}},
+                   {"Thickness", {0.05}},
+                   {"Quads", {1}}});
+  model.meshConstraints().recombinedSurfaces[1] = 45;
+  Mesh mesh;
+  RecordingSink log;
+  generateMesh(model, {}, 2, mesh, log);
+  // The layer's columns are as without recombination: the recombination moves no layer node.
+  for (double x : {0.1, 0.5, 0.9}) {
+    const std::vector<double> ys = columnAt(mesh, x, 0.05);
+    ASSERT_EQ(ys.size(), 4u) << x;
+    EXPECT_EQ(ys[1], 0.01);
+    for (std::size_t k = 2; k < ys.size(); ++k)
+      EXPECT_NEAR((ys[k] - ys[k - 1]) / (ys[k - 1] - ys[k - 2]), 1.2, 1e-9);
+  }
+  const SurfaceFigures f = figures(mesh, 1);
+  // 19 columns of 3 layer quadrangles, and the rest (0.4 x 1 at size 0.05, about 160 cells)
+  // recombined: quadrangles with few triangles left over.
+  EXPECT_GT(f.quadrangles, 57u + 120u);
+  EXPECT_LT(f.triangles, f.quadrangles / 10);
+  EXPECT_GT(f.smallestArea, 0);
+  EXPECT_NEAR(f.area, 0.4, 1e-9);
+  EXPECT_TRUE(checkMesh(model, mesh).ok());
+}
+
 TEST(BoundaryLayer2D, BothChannelWallsAndAConcaveCorner) {
   Model model = channel(0.4, 0.1);
   // Layers on the bottom (1) and left (4) walls: they meet at the concave corner (0, 0).
@@ -170,6 +199,40 @@ TEST(BoundaryLayer2D, BothChannelWallsAndAConcaveCorner) {
   EXPECT_EQ(f.quadrangles, (9u + 3) * 3);  // 9 covered segments below, 3 on the left
   EXPECT_GT(f.smallestArea, 0);
   EXPECT_NEAR(f.area, 0.4, 1e-9);
+  EXPECT_TRUE(checkMesh(model, mesh).ok());
+}
+
+// The cells of the layer of a surface: its first em.layer quadrangles, all positive.
+std::size_t layerQuadrangles(const Mesh& mesh, int surface) {
+  const EntityMesh* em = mesh.find({2, surface});
+  return em && em->layer ? em->layer->quadrangles : 0;
+}
+
+TEST(BoundaryLayer2D, LayersMeetingAtAConcaveCornerAcrossSeveralCellsDoNotOverlap) {
+  // A fin on a channel's floor, its wall nodes 0.02 apart under a layer 0.03 thick: near the
+  // fin's feet the floor's columns run up the fin's layer and the fin's columns along the
+  // floor's. They are cut where the cells overlap, and the layer stays.
+  PolygonModelBuilder b;
+  const std::vector<int> c = b.polygon(
+      {{0, 0}, {0.5, 0}, {0.5, 0.2}, {0.58, 0.2}, {0.58, 0}, {1.6, 0}, {1.6, 0.5}, {0, 0.5}},
+      0.02);
+  b.surface({c});
+  Model model = std::move(b.model);
+  addLayer(model, {{"CurvesList", {1, 2, 3, 4, 5}},
+                   {"Size", {0.002}},
+                   {"Ratio", {1.2}},
+                   {"Thickness", {0.03}},
+                   {"Quads", {1}}});
+  Mesh mesh;
+  RecordingSink log;
+  generateMesh(model, {}, 2, mesh, log);
+  for (const std::string& w : log.warnings)
+    EXPECT_EQ(w.find("could not be joined"), std::string::npos) << w;
+  // 141 wall segments of 7 cells each, less the corners' cut columns.
+  EXPECT_GT(layerQuadrangles(mesh, 1), 600u);
+  const SurfaceFigures f = figures(mesh, 1);
+  EXPECT_GT(f.smallestArea, 0);
+  EXPECT_NEAR(f.area, 1.6 * 0.5 - 0.08 * 0.2, 1e-9);
   EXPECT_TRUE(checkMesh(model, mesh).ok());
 }
 

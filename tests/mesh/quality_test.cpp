@@ -53,6 +53,49 @@ TEST(Quality, DegenerateTetrahedra) {
   EXPECT_GT(tetSicn(a, b, c, {0.3, 0.3, 1e-3}), 0);
 }
 
+TEST(Quality, CornerScaledJacobianOfIdealElementsIsOne) {
+  const Vec3 tet[] = {{0, 0, 0}, {1, 0, 0}, {0.5, kSqrt3 / 2, 0}, {0.5, kSqrt3 / 6, std::sqrt(2.0 / 3)}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Tet4, tet), 1, 1e-12);
+  const Vec3 cube[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                       {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Hex8, cube), 1, 1e-12);
+  // A right prism stays ideal however thin: the measure sees angles, not aspect ratios.
+  const Vec3 prism[] = {{0, 0, 0}, {1, 0, 0}, {0.5, kSqrt3 / 2, 0},
+                        {0, 0, 1e-3}, {1, 0, 1e-3}, {0.5, kSqrt3 / 2, 1e-3}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Prism6, prism), 1, 1e-12);
+  const Vec3 square[] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Quad4, square), 1, 1e-12);
+  const Vec3 triangle[] = {{0, 0, 0}, {1, 0, 0}, {0.5, kSqrt3 / 2, 0}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Triangle3, triangle), 1, 1e-12);
+  const double h = 1 / std::sqrt(2.0);  // equilateral side faces
+  const Vec3 pyramid[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, h}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Pyramid5, pyramid), 1, 1e-12);
+}
+
+TEST(Quality, CornerScaledJacobianOfDistortedAndInvertedElements) {
+  // The top of the cube sheared by half an edge: every corner sees the slanted edge.
+  const Vec3 sheared[] = {{0, 0, 0},   {1, 0, 0},   {1, 1, 0},   {0, 1, 0},
+                          {0.5, 0, 1}, {1.5, 0, 1}, {1.5, 1, 1}, {0.5, 1, 1}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Hex8, sheared), 2 / std::sqrt(5.0), 1e-12);
+  // Right isosceles triangle: the worst corner is 45 degrees, sin 45 / sin 60.
+  const Vec3 right[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Triangle3, right),
+              std::sqrt(2.0) / 2 / (kSqrt3 / 2), 1e-12);
+  const Vec3 inverted[] = {{1, 0, 0}, {0, 0, 0}, {0.5, kSqrt3 / 2, 0},
+                           {0.5, kSqrt3 / 6, std::sqrt(2.0 / 3)}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Tet4, inverted), -1, 1e-12);
+  // A dart: the corner at (0.5, 0.3) is reflex.
+  const Vec3 dart[] = {{0, 0, 0}, {0.5, 0.3, 0}, {1, 0, 0}, {0.5, 1, 0}};
+  EXPECT_LT(cornerScaledJacobian(ElementType::Quad4, dart), 0);
+  const Vec3 below[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, -0.7}};
+  EXPECT_LT(cornerScaledJacobian(ElementType::Pyramid5, below), 0);
+  // Nodes past the vertices (second order) are ignored.
+  const Vec3 tet10[] = {{0, 0, 0}, {1, 0, 0}, {0.5, kSqrt3 / 2, 0},
+                        {0.5, kSqrt3 / 6, std::sqrt(2.0 / 3)}, {9, 9, 9}, {9, 9, 9},
+                        {9, 9, 9}, {9, 9, 9}, {9, 9, 9}, {9, 9, 9}};
+  EXPECT_NEAR(cornerScaledJacobian(ElementType::Tet10, tet10), 1, 1e-12);
+}
+
 TEST(Quality, MeshStatistics) {
   Mesh mesh;
   mesh.reserveNodes(4);
