@@ -56,21 +56,20 @@ LayerNormals::LayerNormals(const Model& model, const post::ViewStore* views)
   const BoundingBox box = model.boundingBox();
   const double diagonal = box.empty() ? 0 : distance(box.min, box.max);
   tolerance_ = 1e-9 * (diagonal > 0 ? diagonal : 1);
-  auto noteHeight = [&](const ExtrusionRecord& r) {
-    if (r.layers.heights.empty()) return;
-    double& h = heights_[r.motion->layerIndex];
-    if (std::abs(r.layers.heights.back()) > std::abs(h)) h = r.layers.heights.back();
+  auto noteHeight = [&](const ExtrusionRecord& r, std::map<int, double>& heights) {
+    double& h = heights[r.source];
+    if (!r.layers.heights.empty() && std::abs(r.layers.heights.back()) > std::abs(h))
+      h = r.layers.heights.back();
   };
   for (const auto& [tag, volume] : model.volumes())
     if (isLayer(volume.extrusion)) {
       surfaces_[volume.extrusion->motion->layerIndex].insert(volume.extrusion->source);
-      noteHeight(*volume.extrusion);
+      noteHeight(*volume.extrusion, surfaceHeights_);
     }
   for (const auto& [tag, surface] : model.surfaces())
     if (isLayer(surface.extrusion)) {
-      const int index = surface.extrusion->motion->layerIndex;
-      curves_[index].insert(surface.extrusion->source);
-      if (!surfaces_.contains(index)) noteHeight(*surface.extrusion);
+      curves_[surface.extrusion->motion->layerIndex].insert(surface.extrusion->source);
+      noteHeight(*surface.extrusion, curveHeights_);
     }
 }
 
@@ -113,6 +112,7 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
           addFace(mesh, face, sums);
           made->faces.nodes.insert(made->faces.nodes.end(), face.begin(), face.end());
           made->faces.sizes.push_back(static_cast<unsigned char>(size));
+          made->faces.heights.push_back(surfaceHeights_.at(tag));
         }
       }
     }
@@ -133,6 +133,7 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
             sums[block.nodes[e + k]] = sums[block.nodes[e + k]] + normal / length;
           made->faces.nodes.insert(made->faces.nodes.end(), {block.nodes[e], block.nodes[e + 1]});
           made->faces.sizes.push_back(2);
+          made->faces.heights.push_back(curveHeights_.at(tag));
         }
       }
     }
@@ -148,8 +149,7 @@ const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
     const double length = norm(sums.at(node));
     made->units[node] = length > 1e-12 ? sums.at(node) / length : Vec3{};
   }
-  const auto h = heights_.find(index);
-  made->shrinking = shrinkLayer(mesh, made->faces, made->units, h == heights_.end() ? 0 : h->second);
+  made->shrinking = shrinkLayer(mesh, made->faces, made->units);
   return *fields_.emplace(index, std::move(made)).first->second;
 }
 

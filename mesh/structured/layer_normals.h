@@ -60,7 +60,8 @@ class LayerNormals {
   double tolerance_ = 0;
   std::map<int, std::set<int>> surfaces_;  // index -> source surfaces
   std::map<int, std::set<int>> curves_;    // index -> source curves
-  std::map<int, double> heights_;  // index -> the height of its thickest layer (signed)
+  std::map<int, double> surfaceHeights_;  // source surface -> its thickest layer (signed)
+  std::map<int, double> curveHeights_;    // source curve -> its thickest layer (signed)
   mutable std::map<int, std::unique_ptr<Field>> fields_;
   const post::ViewStore* views_ = nullptr;
   mutable std::map<int, std::unique_ptr<post::ViewProbe>> probes_;  // view index -> probe

@@ -20,16 +20,17 @@ double det(Vec3 a, Vec3 b, Vec3 c) { return dot(a, cross(b, c)); }
 struct Columns {
   const Mesh& mesh;
   const std::unordered_map<NodeIndex, Vec3>& normals;
+  const std::unordered_map<NodeIndex, double>& height;  // per node, signed
   std::unordered_map<NodeIndex, double>& factor;
-  double height;
 
-  Vec3 top(NodeIndex n) const { return mesh.node(n) + height * factor.at(n) * normals.at(n); }
+  Vec3 top(NodeIndex n) const {
+    return mesh.node(n) + height.at(n) * factor.at(n) * normals.at(n);
+  }
 
   // Every corner of the element over the face, at its bottom and at its top, turns the way
-  // the layer grows.
-  bool valid(std::span<const NodeIndex> f) const {
+  // the face's layer grows (`sign`).
+  bool valid(std::span<const NodeIndex> f, double sign) const {
     const std::size_t n = f.size();
-    const double sign = height > 0 ? 1 : -1;
     if (n == 2) return validQuadrangle(f[0], f[1], sign);
     for (std::size_t i = 0; i < n; ++i) {
       const NodeIndex a = f[i], next = f[(i + 1) % n], previous = f[(i + n - 1) % n];
@@ -63,11 +64,18 @@ std::set<std::pair<NodeIndex, NodeIndex>> faceNeighbours(const LayerFaces& faces
   return pairs;
 }
 
-// (1): nodes of the layer closer than two heights, each ahead of the other along its normal.
+// (1): nodes of the layer closer than two heights, each ahead of the other the way its
+// column grows.
 void keepFacingPartsApart(const Mesh& mesh, const LayerFaces& faces,
-                          const std::unordered_map<NodeIndex, Vec3>& normals, double height,
+                          const std::unordered_map<NodeIndex, Vec3>& normals,
+                          const std::unordered_map<NodeIndex, double>& height,
                           std::unordered_map<NodeIndex, double>& factor) {
-  const double reach = 2 * std::abs(height), sign = height > 0 ? 1 : -1;
+  double reach = 0;
+  for (const auto& [n, h] : height) reach = std::max(reach, 2 * std::abs(h));
+  if (!(reach > 0)) return;
+  auto growth = [&](NodeIndex n) {
+    return (height.at(n) > 0 ? 1.0 : height.at(n) < 0 ? -1.0 : 0.0) * normals.at(n);
+  };
   using Cell = std::tuple<long long, long long, long long>;
   auto cellOf = [&](Vec3 p) {
     return Cell{std::llround(std::floor(p.x / reach)), std::llround(std::floor(p.y / reach)),
@@ -92,12 +100,10 @@ void keepFacingPartsApart(const Mesh& mesh, const LayerFaces& faces,
             const Vec3 gap = mesh.node(b) - p;
             const double d = norm(gap);
             if (!(d < reach) || d == 0) continue;
-            if (sign * dot(normals.at(a), gap) <= kFacing * d ||
-                sign * dot(normals.at(b), -1.0 * gap) <= kFacing * d)
+            if (dot(growth(a), gap) <= kFacing * d || dot(growth(b), -1.0 * gap) <= kFacing * d)
               continue;
-            const double most = kGapShare * d / std::abs(height);
-            factor[a] = std::min(factor[a], most);
-            factor[b] = std::min(factor[b], most);
+            factor[a] = std::min(factor[a], kGapShare * d / std::abs(height.at(a)));
+            factor[b] = std::min(factor[b], kGapShare * d / std::abs(height.at(b)));
           }
         }
   }
@@ -108,10 +114,11 @@ void shortenInvertedElements(const LayerFaces& faces, const Columns& columns) {
   for (int round = 0; round < kShortenRounds; ++round) {
     std::set<NodeIndex> shorten;
     std::size_t at = 0;
-    for (unsigned char size : faces.sizes) {
-      const std::span<const NodeIndex> f(faces.nodes.data() + at, size);
-      if (!columns.valid(f)) shorten.insert(f.begin(), f.end());
-      at += size;
+    for (std::size_t k = 0; k < faces.sizes.size(); ++k) {
+      const std::span<const NodeIndex> f(faces.nodes.data() + at, faces.sizes[k]);
+      const double h = faces.heights[k];
+      if (h != 0 && !columns.valid(f, h > 0 ? 1 : -1)) shorten.insert(f.begin(), f.end());
+      at += faces.sizes[k];
     }
     if (shorten.empty()) return;
     for (NodeIndex n : shorten) columns.factor[n] *= kShorten;
@@ -121,12 +128,24 @@ void shortenInvertedElements(const LayerFaces& faces, const Columns& columns) {
 }  // namespace
 
 LayerShrinking shrinkLayer(const Mesh& mesh, const LayerFaces& faces,
-                           const std::unordered_map<NodeIndex, Vec3>& normals, double height) {
+                           const std::unordered_map<NodeIndex, Vec3>& normals) {
   LayerShrinking s;
-  for (const auto& [n, normal] : normals) s.factor[n] = 1;
-  if (height == 0) return s;
+  std::unordered_map<NodeIndex, double> height;
+  for (const auto& [n, normal] : normals) {
+    s.factor[n] = 1;
+    height[n] = 0;
+  }
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < faces.sizes.size(); ++k) {
+    for (std::size_t i = 0; i < faces.sizes[k]; ++i) {
+      const auto h = height.find(faces.nodes[at + i]);
+      if (h != height.end() && std::abs(faces.heights[k]) > std::abs(h->second))
+        h->second = faces.heights[k];
+    }
+    at += faces.sizes[k];
+  }
   keepFacingPartsApart(mesh, faces, normals, height, s.factor);
-  shortenInvertedElements(faces, Columns{mesh, normals, s.factor, height});
+  shortenInvertedElements(faces, Columns{mesh, normals, height, s.factor});
   for (const auto& [n, f] : s.factor) {
     if (f < 1) ++s.shrunk;
     if (f < s.smallest || (f == s.smallest && f < 1 && n < s.where)) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -238,6 +239,34 @@ TEST(BoundaryLayerExtrusion, AMissingViewIsAnErrorNamingItsIndex) {
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("no view at index 4"), std::string::npos) << e.what();
   }
+}
+
+TEST(BoundaryLayerExtrusion, LayersGrowingTowardsEachOtherAreMadeThinnerWithAWarning) {
+  // A slab 0.1 thick: its floor grows 0.08 up along its normal, its ceiling (the same
+  // orientation) 0.08 down against it. Each layer keeps at most 0.45 of the gap.
+  ScriptRun run;
+  run.run(std::string(kSquare) + R"(
+    Translate {0, 0, 0.1} { Duplicata { Surface{1}; } }
+    a[] = Extrude { Surface{1}; Layers{{2, 2}, {0.04, 0.08}}; Recombine; };
+    b[] = Extrude { Surface{5}; Layers{{2, 2}, {-0.04, -0.08}}; Recombine; };
+  )");
+  api::generate(run.session, 3);
+  const Mesh& mesh = run.session.mesh();
+  const std::vector<NodeIndex> prisms = prismsOf(mesh);
+  ASSERT_FALSE(prisms.empty());
+  for (std::size_t e = 0; e < prisms.size(); e += 6)
+    for (double j : cornerJacobians(mesh, std::span(prisms).subspan(e, 6)))
+      EXPECT_GT(j, 0) << "prism " << e / 6;
+  const std::vector<double> z = levelsOf(mesh, prisms);
+  ASSERT_EQ(z.size(), 10u);          // 2 + 2 cells on each side, 5 levels
+  EXPECT_NEAR(z[2], 0.0225, 1e-12);  // the floor's layer: 0.04 and 0.08 at 0.5625
+  EXPECT_NEAR(z[4], 0.045, 1e-12);
+  EXPECT_NEAR(z[5], 0.055, 1e-12);   // the ceiling's
+  EXPECT_NEAR(z[7], 0.0775, 1e-12);
+  bool warned = false;
+  for (const std::string& w : run.log.warnings)
+    warned = warned || w.find("made thinner than asked") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 TEST(BoundaryLayerExtrusion, TheOpenCascadeFactoryNamesTheKernelItNeeds) {
