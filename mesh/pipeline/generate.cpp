@@ -64,8 +64,14 @@ void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fi
   }
 }
 
+bool hasMesh(const Mesh& mesh, EntityId id) {
+  const EntityMesh* em = mesh.find(id);
+  return em && em->elementCount() > 0;
+}
+
 // Curves in meshingOrder: sweeps and copies after what they copy. The curves of boundary
-// layers grown from surfaces wait for them (`layers`: those alone, else all the others).
+// layers grown from surfaces wait for them (`layers`: those whose surfaces are meshed now and
+// that have no mesh yet, else all the curves that do not wait).
 void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fields,
                 const post::ViewStore* views, Mesh& mesh, bool layers = false) {
   const std::map<int, Periodicity> links = periodicCurves(model);
@@ -75,6 +81,7 @@ void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fi
   for (const PlannedEntity& p : meshingOrder(model, 1, links)) {
     const EntityId id{1, p.tag};
     if (extruded.waitsForSurfaces(id) != layers) continue;
+    if (layers && (hasMesh(mesh, id) || !extruded.layerReady(id, mesh))) continue;
     if (p.method == MeshingMethod::Own && extruded.touchesLayer(id))
       followers.push_back(p.tag);
     else if (p.method == MeshingMethod::Own)
@@ -273,9 +280,22 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
     else
       meshPlanned(p);
   }
-  if (!layers.empty()) {
+  // In rounds: a layer grown from the top of another layer comes a round after it.
+  while (!layers.empty()) {
     meshCurves(model, stage.rules, stage.fields, options.views, mesh, true);
-    for (const PlannedEntity& p : layers) meshPlanned(p);
+    std::vector<PlannedEntity> waiting;
+    for (const PlannedEntity& p : layers) {
+      if (extruded.layerReady({2, p.tag}, mesh))
+        meshPlanned(p);
+      else
+        waiting.push_back(p);
+    }
+    if (waiting.size() == layers.size()) {
+      // Nothing could be meshed: the first one is meshed as it is, and names what it lacks.
+      meshPlanned(waiting.front());
+      waiting.erase(waiting.begin());
+    }
+    layers = std::move(waiting);
   }
   for (const std::string& line : extruded.layerWarnings()) log.warning(line);
   mesh.dropUnheldNodes();  // the nodes recombination took out

@@ -469,6 +469,33 @@ bool ExtrusionMesher::waitsForSurfaces(EntityId id) const {
   return false;
 }
 
+bool ExtrusionMesher::layerReady(EntityId id, const Mesh& mesh) const {
+  auto blocked = [&](const ExtrusionRecord* record) {
+    return record && isBoundaryLayer(*record) &&
+           !normals_->sourcesMeshed(mesh, record->motion->layerIndex);
+  };
+  if (id.dim == 1) {
+    if (touchesLayer(id)) {
+      const ModelCurve& curve = *model_.curve(id.tag);
+      for (int end : {curve.startPoint, curve.endPoint})
+        if (const auto it = layerPoints_.find(end);
+            it != layerPoints_.end() && blocked(it->second))
+          return false;
+    }
+    return !blocked(sweepRecord(id.tag)) && !blocked(imageRecord(id));
+  }
+  if (id.dim != 2) return true;
+  const ModelSurface* surface = model_.surface(id.tag);
+  if (!surface) return true;
+  if (blocked(surface->extrusion ? &*surface->extrusion : nullptr) || blocked(imageRecord(id)))
+    return false;
+  for (int c : model_.boundary(id)) {
+    const EntityMesh* em = mesh.find({1, std::abs(c)});
+    if (!em || em->elementCount() == 0) return false;
+  }
+  return true;
+}
+
 bool ExtrusionMesher::meshesVolume(int tag) const {
   const ModelVolume* volume = model_.volume(tag);
   return volume && hasLayers(volume->extrusion);

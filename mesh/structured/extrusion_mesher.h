@@ -49,6 +49,10 @@ class ExtrusionMesher {
   // Whether the curve or surface belongs to a boundary layer grown from surfaces (or is bounded
   // by such a curve): it is meshed once the surfaces it grows from are, in the 2D stage.
   bool waitsForSurfaces(EntityId id) const;
+  // Whether such a curve or surface can be meshed now: the surfaces its layers grow from have
+  // their mesh in `mesh` and, for a surface, so have its boundary curves. (A layer grown from
+  // the top of another layer waits for that layer.)
+  bool layerReady(EntityId id, const Mesh& mesh) const;
 
   // Whether the curve, meshed by its own mesher, ends at a point a boundary layer moved: it is
   // meshed after the layer's curves, then follows its ends (followLayerEnds).

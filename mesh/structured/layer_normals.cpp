@@ -91,6 +91,15 @@ std::vector<std::string> LayerNormals::warnings() const {
 
 LayerNormals::~LayerNormals() = default;
 
+bool LayerNormals::sourcesMeshed(const Mesh& mesh, int index) const {
+  const auto surfaces = surfaces_.find(index);
+  if (surfaces == surfaces_.end()) return true;
+  return std::all_of(surfaces->second.begin(), surfaces->second.end(), [&](int tag) {
+    const EntityMesh* em = mesh.find({2, tag});
+    return em && em->elementCount() > 0;
+  });
+}
+
 const LayerNormals::Field& LayerNormals::field(const Mesh& mesh, int index,
                                                EntityId asking) const {
   if (const auto it = fields_.find(index); it != fields_.end()) return *it->second;

@@ -39,6 +39,8 @@ class LayerNormals {
 
   // Whether the layers of this index grow from surfaces: their curves wait for the 2D mesh.
   bool fromSurfaces(int index) const { return surfaces_.contains(index); }
+  // Whether every source surface of the layers of `index` has its mesh in `mesh`.
+  bool sourcesMeshed(const Mesh& mesh, int index) const;
 
   // p, a node of a source of the layers of `index`, moved `height` along its normal. The
   // normals of an index are computed from the mesh on first use: its sources must be meshed.

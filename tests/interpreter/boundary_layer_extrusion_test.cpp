@@ -269,6 +269,27 @@ TEST(BoundaryLayerExtrusion, LayersGrowingTowardsEachOtherAreMadeThinnerWithAWar
   EXPECT_TRUE(warned);
 }
 
+TEST(BoundaryLayerExtrusion, ALayerGrowsFromTheTopOfAnotherLayer) {
+  // Index 1 grows from the top of index 0's layer: it is meshed a round after it.
+  ScriptRun run;
+  run.run(std::string(kSquare) + R"(
+    a[] = Extrude { Surface{1}; Layers{{2}, {0.02}}; Recombine; };
+    b[] = Extrude { Surface{a[0]}; Layers{{3}, {0.1}}; Recombine; Using Index[1]; };
+  )");
+  api::generate(run.session, 3);
+  const Mesh& mesh = run.session.mesh();
+  const std::vector<NodeIndex> prisms = prismsOf(mesh);
+  ASSERT_FALSE(prisms.empty());
+  for (std::size_t e = 0; e < prisms.size(); e += 6)
+    for (double j : cornerJacobians(mesh, std::span(prisms).subspan(e, 6)))
+      EXPECT_GT(j, 0) << "prism " << e / 6;
+  const std::vector<double> z = levelsOf(mesh, prisms);
+  ASSERT_EQ(z.size(), 6u);
+  const double expected[] = {0, 0.01, 0.02, 0.02 + 0.1 / 3, 0.02 + 0.2 / 3, 0.12};
+  for (std::size_t k = 0; k < z.size(); ++k) EXPECT_NEAR(z[k], expected[k], 1e-9) << k;
+  EXPECT_EQ(prisms.size() / 6 % 5, 0u);  // 2 + 3 prisms over each triangle
+}
+
 TEST(BoundaryLayerExtrusion, TheOpenCascadeFactoryNamesTheKernelItNeeds) {
   const std::string error = testing::firstLineOf(R"(
     SetFactory("OpenCASCADE");
