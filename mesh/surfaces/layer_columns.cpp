@@ -159,8 +159,9 @@ bool shortenInvalidCells(const LayerWall& wall, WallColumns& columns) {
   return changed;
 }
 
-// Whether two convex polygons overlap by more than `tiny` along every separating direction
-// (their edges' normals): cells that only share an edge or a corner do not.
+// Whether two convex polygons (or a polygon and a segment) overlap by more than `tiny` along
+// every separating direction (their edges' normals): cells that only share an edge or a
+// corner do not.
 bool overlapping(const std::vector<Vec2>& p, const std::vector<Vec2>& q, double tiny) {
   for (const std::vector<Vec2>* poly : {&p, &q})
     for (std::size_t k = 0; k < poly->size(); ++k) {
@@ -177,53 +178,62 @@ bool overlapping(const std::vector<Vec2>& p, const std::vector<Vec2>& q, double 
         qLow = std::min(qLow, dot2(v, normal));
         qHigh = std::max(qHigh, dot2(v, normal));
       }
-      if (std::min(pHigh, qHigh) - std::max(pLow, qLow) <= tiny) return false;
+      // How far one must move to part them along `normal` (for a segment, whose extent
+      // across itself is nil, how deep its line cuts the other).
+      if (std::min(pHigh - qLow, qHigh - pLow) <= tiny) return false;
     }
   return true;
 }
 
-// Cuts the columns of every two cells (of any walls) that overlap: the layers of two walls
-// meeting at a concave corner, or of walls facing each other, which the rays of `reach` do
-// not see when the columns run alongside the other wall. Cells are swept in order of their
-// smallest abscissa.
+// Cuts the columns of every two cells (of any walls) that overlap, and of every cell that a
+// wall segment crosses: the layers of two walls meeting at a concave corner, or of walls
+// facing each other, which the rays of `reach` do not see when the columns run alongside
+// the other wall, and the tip of a wall reaching into a cell between two columns whose rays
+// pass either side of it. Cells and segments are swept in order of their smallest abscissa.
 bool shortenOverlappingCells(std::span<const LayerWall> walls, std::span<WallColumns> columns) {
   struct Placed {
     std::size_t wall;
     LayerCell cell;
-    std::vector<Vec2> corners;
-    double xLow, xHigh, yLow, yHigh;
+    std::vector<Vec2> corners;  // a cell's, or a wall segment's two ends
+    bool segment;
+    double xLow = 1e300, xHigh = -1e300, yLow = 1e300, yHigh = -1e300;
   };
-  std::vector<Placed> cells;
+  std::vector<Placed> items;
+  auto place = [&](Placed placed) {
+    for (Vec2 v : placed.corners) {
+      placed.xLow = std::min(placed.xLow, v.u);
+      placed.xHigh = std::max(placed.xHigh, v.u);
+      placed.yLow = std::min(placed.yLow, v.v);
+      placed.yHigh = std::max(placed.yHigh, v.v);
+    }
+    items.push_back(std::move(placed));
+  };
   double scale = 0;
   for (std::size_t w = 0; w < walls.size(); ++w) {
-    scale = std::max(scale, wallScale(walls[w]));
-    forEachCell(walls[w], columns[w], [&](const LayerCell& cell) {
-      std::vector<Vec2> corners = cellCorners(walls[w], columns[w], cell);
-      if (corners.size() < 3) return;
-      Placed placed{w, cell, std::move(corners), 1e300, -1e300, 1e300, -1e300};
-      for (Vec2 v : placed.corners) {
-        placed.xLow = std::min(placed.xLow, v.u);
-        placed.xHigh = std::max(placed.xHigh, v.u);
-        placed.yLow = std::min(placed.yLow, v.v);
-        placed.yHigh = std::max(placed.yHigh, v.v);
-      }
-      cells.push_back(std::move(placed));
+    const LayerWall& wall = walls[w];
+    scale = std::max(scale, wallScale(wall));
+    forEachCell(wall, columns[w], [&](const LayerCell& cell) {
+      std::vector<Vec2> corners = cellCorners(wall, columns[w], cell);
+      if (corners.size() >= 3) place({w, cell, std::move(corners), false});
     });
+    for (std::size_t k = 0; k < wall.xy.size(); ++k)
+      place({w, {}, {wall.xy[k], wall.xy[following(k, wall.xy.size())]}, true});
   }
-  std::sort(cells.begin(), cells.end(),
+  std::sort(items.begin(), items.end(),
             [](const Placed& a, const Placed& b) { return a.xLow < b.xLow; });
   const double tiny = 1e-9 * scale;
   std::vector<std::size_t> cut;
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    for (std::size_t j = i + 1; j < cells.size() && cells[j].xLow < cells[i].xHigh - tiny; ++j) {
-      const Placed& a = cells[i];
-      const Placed& b = cells[j];
+  for (std::size_t i = 0; i < items.size(); ++i)
+    for (std::size_t j = i + 1; j < items.size() && items[j].xLow < items[i].xHigh - tiny; ++j) {
+      const Placed& a = items[i];
+      const Placed& b = items[j];
+      if (a.segment && b.segment) continue;
       if (a.yHigh - tiny <= b.yLow || b.yHigh - tiny <= a.yLow) continue;
       if (!overlapping(a.corners, b.corners, tiny)) continue;
-      cut.push_back(i);
-      cut.push_back(j);
+      if (!a.segment) cut.push_back(i);
+      if (!b.segment) cut.push_back(j);
     }
-  for (std::size_t i : cut) cutAt(walls[cells[i].wall], columns[cells[i].wall], cells[i].cell);
+  for (std::size_t i : cut) cutAt(walls[items[i].wall], columns[items[i].wall], items[i].cell);
   return !cut.empty();
 }
 

@@ -477,19 +477,19 @@ void addLayerElements(const SurfaceLayer& layer, EntityMesh& em) {
 // Elements of a boundary layer's fan at a corner: Mesh.BoundaryLayerFanElements' default.
 constexpr int kFanElements = 5;
 
-// Meshes the surface, with the boundary layers of `fields` when `withLayers`; `layered` tells
-// whether a layer was built.
+// Meshes the surface, with the boundary layers of `fields`; `layered` tells whether a layer
+// was built.
 void meshSurfaceOnce(const Model& model, const ModelSurface& surface, const SizeRules& rules,
                      int smoothingPasses, Mesh& mesh, const SizeFields* fields,
                      const SurfaceAlgorithm& algorithm, const AnisotropicSettings& anisotropy,
-                     bool withLayers, bool& layered) {
+                     bool& layered) {
   const EntityId id{2, surface.tag};
   if (!surface.geometry) throw MeshError(id, "surface has no geometry");
   if (surface.loops.empty()) throw MeshError(id, "surface has no boundary");
   const SurfaceGeometry& g = *surface.geometry;
   EntityMesh& em = mesh.entity(id);
   std::optional<SurfaceLayer> layer;
-  if (fields && withLayers)
+  if (fields)
     if (const auto layers = fields->boundaryLayers(); !layers.empty()) {
       em.nodes.clear();
       em.parametric.clear();
@@ -581,19 +581,18 @@ void meshSurface(const Model& model, const ModelSurface& surface, const SizeRule
   bool layered = false;
   try {
     meshSurfaceOnce(model, surface, rules, smoothingPasses, mesh, fields, algorithm, anisotropy,
-                    true, layered);
-    return;
+                    layered);
   } catch (const MeshError& e) {
     if (!layered) throw;
-    // The layer's fronts cross somewhere the checks did not see: the surface is meshed
-    // without its layer rather than not at all (the column nodes, held by nothing, are
-    // dropped with the others recombination leaves).
-    fields->warning("surface " + std::to_string(surface.tag) +
-                    ": the rest of the mesh could not be joined to its boundary layer (" +
-                    e.what() + "); meshed without the layer");
+    // The layer's front crosses itself or the boundary somewhere the shortening did not
+    // see. A mesh without the layer asked for is no answer: the surface is named instead.
+    const std::string prefix = "cannot mesh " + entityName(e.entity) + ": ";
+    const std::string what = e.what();
+    throw MeshError({2, surface.tag},
+                    "the rest of the mesh cannot be joined to its boundary layer (" +
+                        (what.starts_with(prefix) ? what.substr(prefix.size()) : what) +
+                        "); a thinner layer (Thickness) or finer sizes along its walls may fit");
   }
-  meshSurfaceOnce(model, surface, rules, smoothingPasses, mesh, fields, algorithm, anisotropy,
-                  false, layered);
 }
 
 }  // namespace geomesh

@@ -236,6 +236,39 @@ TEST(BoundaryLayer2D, LayersMeetingAtAConcaveCornerAcrossSeveralCellsDoNotOverla
   EXPECT_TRUE(checkMesh(model, mesh).ok());
 }
 
+TEST(BoundaryLayer2D, AWallTipBetweenTwoColumnsCutsTheCellsItReaches) {
+  // A needle hangs from the ceiling down to 0.06 above the floor, between the floor's
+  // columns at x = 0.5 and 0.55, whose rays miss it: the layer, 0.1 thick, is cut below
+  // the tip there instead of wrapping round it.
+  PolygonModelBuilder b;
+  const std::vector<int> c = b.polygon({{0, 0}, {1, 0}, {1, 0.4}, {0.53, 0.4}, {0.525, 0.06},
+                                        {0.52, 0.4}, {0, 0.4}},
+                                       0.05);
+  b.surface({c});
+  Model model = std::move(b.model);
+  addLayer(model, {{"CurvesList", {1}},
+                   {"Size", {0.01}},
+                   {"Ratio", {1.2}},
+                   {"Thickness", {0.1}},
+                   {"Quads", {1}}});
+  Mesh mesh;
+  RecordingSink log;
+  ASSERT_NO_THROW(generateMesh(model, {}, 2, mesh, log));
+  // Far from the needle the columns keep their 6 cells (0.01 ... 0.0744 below 0.1).
+  EXPECT_EQ(columnAt(mesh, 0.2, 0.2).size(), 7u);
+  // Under the needle they stop below its tip.
+  for (double x : {0.5, 0.55}) {
+    const std::vector<double> ys = columnAt(mesh, x, 0.2);
+    ASSERT_FALSE(ys.empty());
+    EXPECT_LT(ys.back(), 0.06) << x;
+  }
+  EXPECT_GT(layerQuadrangles(mesh, 1), 80u);
+  const SurfaceFigures f = figures(mesh, 1);
+  EXPECT_GT(f.smallestArea, 0);
+  EXPECT_NEAR(f.area, 0.4 - 0.5 * 0.01 * 0.34, 1e-9);
+  EXPECT_TRUE(checkMesh(model, mesh).ok());
+}
+
 // NACA 0012 (closed trailing edge) as a polygon, from the trailing edge over the upper side.
 std::vector<Vec2> naca0012(int n) {
   auto thickness = [](double x) {
