@@ -20,14 +20,47 @@ Session::Session(MessageSink& log, std::ostream& out) : log_(log), out_(out) {}
 Session::~Session() = default;
 
 void Session::synchronize() {
-  if (!meshFromFile_) {
+  if (!meshFromFile_ || addsToDiscreteSurfaces()) {
     factories_.synchronize(model_);
     warnOfSkippedMembers();
     return;
   }
-  if (hasGeometry())
+  if (hasGeometry() && discreteSurfaces_.empty())
     throw std::runtime_error(
         "the script defines geometry besides a merged mesh file: mixing both is not supported yet");
+}
+
+bool Session::addsToDiscreteSurfaces() const {
+  if (discreteSurfaces_.empty()) return false;
+  for (int dim : {0, 1, 3})
+    if (!factories_.tags(dim).empty()) return true;
+  const std::vector<int> surfaces = factories_.tags(2);
+  if (!std::equal(surfaces.begin(), surfaces.end(), discreteSurfaces_.begin(),
+                  discreteSurfaces_.end()))
+    return true;
+  return factories_.current().physicalGroups().size() != discretePhysicals_;
+}
+
+// The surfaces of a file that holds closed surfaces only (no curve, no volume, no point
+// element) join the built-in factory as discrete surfaces, with the file's surface groups.
+bool Session::registerDiscreteSurfaces(const std::string& file) {
+  if (model_.surfaces().empty() || !model_.curves().empty() || !model_.volumes().empty() ||
+      !model_.points().empty())
+    return false;
+  for (const auto& [tag, surface] : model_.surfaces()) {
+    BoundingBox box;
+    if (const EntityMesh* em = mesh_.find({2, tag}))
+      for (NodeIndex n : em->nodes) box.include(mesh_.node(n));
+    factories_.addDiscreteSurface(tag, box, file);
+    discreteSurfaces_.insert(tag);
+  }
+  for (const auto& [id, group] : model_.physicalGroups()) {
+    if (id.dim != 2) continue;
+    factories_.builtIn().addPhysicalGroup(2, id.tag, group.name, group.entities);
+    ++discretePhysicals_;
+  }
+  discreteMesh_ = mesh_;
+  return true;
 }
 
 // As the reference does, a physical group keeps the members the model has and skips the
@@ -59,6 +92,7 @@ void Session::readMesh(const std::string& path) {
                              "' format is not supported (read: " + readExtensionList() + ")");
   readMeshFile(path, *format, model_, mesh_);
   meshFromFile_ = true;
+  registerDiscreteSurfaces(path);
 }
 
 MeshOptions Session::meshOptions() const {
@@ -100,12 +134,15 @@ MeshOptions Session::meshOptions() const {
 
 void Session::generate(int dim) {
   synchronize();
-  if (meshFromFile_) {
+  const bool discrete = meshFromFile_ && addsToDiscreteSurfaces();
+  if (meshFromFile_ && !discrete) {
     log_.info("Keeping the mesh read from file: it has no geometry to mesh again");
     computeHomology(homologyRequests_, model_, mesh_, log_);
     return;
   }
-  generateMesh(model_, meshOptions(), dim, mesh_, log_);
+  MeshOptions options = meshOptions();
+  if (discrete) options.discreteMesh = &discreteMesh_;
+  generateMesh(model_, options, dim, mesh_, log_);
   computeHomology(homologyRequests_, model_, mesh_, log_);
   const int partitions = clampedInteger<int>(options_.number("Mesh.NbPartitions"));
   if (partitions > 0) api::partitionMesh(*this, partitions);
@@ -118,6 +155,9 @@ void Session::clearModel() {
   homologyRequests_.clear();
   origins_.clear();
   meshFromFile_ = false;
+  discreteMesh_ = Mesh();
+  discreteSurfaces_.clear();
+  discretePhysicals_ = 0;
 }
 
 void Session::recordOrigin(EntityId entity, const SourceLocation& where) {

@@ -75,8 +75,12 @@ class Session {
   void clearModel();
   // Replaces the model and the mesh by those of a mesh file, read by the format its
   // extension names (Merge "f.msh"; in a script). The mesh is then kept as read: meshing
-  // leaves it alone, and defining geometry besides is refused when the model is next
-  // synchronized. Throws std::runtime_error (MshReadError for a malformed MSH file).
+  // leaves it alone. When the file holds closed surfaces only (an STL, PLY, OFF file...),
+  // they also become discrete surfaces of the built-in factory, which Surface Loop, Volume
+  // and Physical statements may use: a script that adds to them makes the model from the
+  // factories, and meshing copies their triangles from the file and meshes the rest (the
+  // volumes they bound). Other geometry besides a merged mesh is refused when the model is
+  // next synchronized. Throws std::runtime_error (MshReadError for a malformed MSH file).
   void readMesh(const std::string& path);
   bool meshFromFile() const { return meshFromFile_; }
   // Whether any geometry factory holds an entity.
@@ -117,6 +121,14 @@ class Session {
   bool systemCallsAllowed_ = false;
   bool sandboxed_ = false;
   bool meshFromFile_ = false;
+  // Merged closed surfaces registered as discrete surfaces (see readMesh): the file's mesh,
+  // their tags, and how many physical groups came with them.
+  Mesh discreteMesh_;
+  std::set<int> discreteSurfaces_;
+  std::size_t discretePhysicals_ = 0;
+  bool registerDiscreteSurfaces(const std::string& file);
+  // Whether the script defined anything besides the merged discrete surfaces.
+  bool addsToDiscreteSurfaces() const;
   // Physical group members the model lacked at a synchronization: (dim, group, member).
   std::set<std::tuple<int, int, int>> skippedMembers_;
   void warnOfSkippedMembers();

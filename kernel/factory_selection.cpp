@@ -35,6 +35,13 @@ bool FactorySelection::select(const std::string& name) {
 
 SolidModeling& FactorySelection::solidModeler() { return factories_->occ; }
 
+GeometryFactory& FactorySelection::builtIn() { return factories_->builtIn; }
+
+void FactorySelection::addDiscreteSurface(int tag, const BoundingBox& box,
+                                          const std::string& file) {
+  factories_->builtIn.addDiscreteSurface(tag, box, file);
+}
+
 void FactorySelection::onHandover(FallbackFactory::Handover handover) {
   factories_->occFirst.onHandover(std::move(handover));
 }

@@ -27,6 +27,12 @@ class FactorySelection {
   // Told of every operation the selected factory hands over to the built-in one.
   void onHandover(FallbackFactory::Handover handover);
 
+  // The built-in factory, whichever is selected (what a merged mesh file adds goes there).
+  GeometryFactory& builtIn();
+  // A closed surface of a merged mesh file, in the built-in factory (GeoFactory's
+  // addDiscreteSurface).
+  void addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file);
+
   // Clears the model's entities, then adds those of every factory.
   void synchronize(Model& model) const;
   void clear();

@@ -122,6 +122,8 @@ struct ModelSurface {
   std::optional<ExtrusionRecord> extrusion = std::nullopt;
   std::optional<Periodicity> periodic = std::nullopt;
   std::vector<int> compound = {};
+  // From a merged mesh file (Merge "x.stl"): no geometry; its mesh is the file's triangles.
+  bool discrete = false;
 };
 
 struct ModelVolume {

@@ -197,6 +197,7 @@ void GeoFactory::mergeSurfaces() {
   std::map<std::vector<int>, int> seen;
   std::map<int, int> replacement;
   for (const auto& [tag, surface] : surfaces_) {
+    if (surface.kind == SurfaceKind::Discrete) continue;  // no loops to compare
     auto [it, inserted] = seen.emplace(unsignedSet(surface.loops), tag);
     if (!inserted) replacement[tag] = it->second;
   }

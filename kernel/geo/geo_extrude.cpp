@@ -42,7 +42,7 @@ int remapped(int signedTag, const std::map<int, int>& merges) {
 std::vector<EntityId> GeoFactory::extrude(const std::vector<EntityId>& shapes,
                                           const ExtrusionMotion& motion,
                                           const ExtrusionLayers& layers) {
-  for (EntityId shape : shapes) requireShape(shape, "Extrude");
+  for (EntityId shape : shapes) requireGeometric(shape, "Extrude");
   const bool layer = motion.kind == ExtrusionMotion::Kind::Normals;
   if (!layer) checkMotion(motion);
   if (layer && layers.elements.empty())

@@ -69,6 +69,13 @@ class GeoFactory final : public GeometryFactory {
   void addPhysicalGroup(int dim, int tag, const std::string& name,
                         const std::vector<int>& entities) override;
 
+  // A surface of a merged mesh file (`file`), closed (no boundary curve): it has no geometry,
+  // only the file's triangles, and lies in `box`. Surface loops and volumes may use it; it
+  // cannot be moved, copied or extruded. The unrolled script merges the file again.
+  void addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file);
+  // The file each discrete surface comes from.
+  const std::map<int, std::string>& discreteFiles() const { return discreteFiles_; }
+
   // Surface(tag) = {loop}: a surface filling a loop of 3 or 4 curves by transfinite
   // interpolation of its sides.
   void addFillingSurface(int tag, std::vector<int> curveLoops,
@@ -163,7 +170,7 @@ class GeoFactory final : public GeometryFactory {
 
   // The definitions, as the unrolled .geo writer lists them.
   using CurveKind = geomesh::CurveKind;  // all but Other
-  enum class SurfaceKind { Plane, Filling, Swept };
+  enum class SurfaceKind { Plane, Filling, Swept, Discrete };
   struct Curve {
     int tag;
     CurveKind kind = CurveKind::Line;
@@ -219,6 +226,8 @@ class GeoFactory final : public GeometryFactory {
   std::map<int, std::vector<int>> surfaceLoops_;
   std::map<int, Volume> volumes_;
   std::map<EntityId, PhysicalGroup> physicals_;
+  std::map<int, BoundingBox> discreteBoxes_;  // discrete surface -> the box of its nodes
+  std::map<int, std::string> discreteFiles_;  // discrete surface -> the file it comes from
   double tolerance_ = 1e-8;
   bool autoCoherence_ = true;
   bool returnLaterals_ = true;
@@ -257,6 +266,8 @@ class GeoFactory final : public GeometryFactory {
 
   // geo_transform.cpp
   void requireShape(EntityId shape, const char* operation) const;
+  // requireShape, and the shape holds no discrete surface (whose triangles cannot follow).
+  void requireGeometric(EntityId shape, const char* operation) const;
   void collectPoints(EntityId shape, std::vector<int>& out) const;
   void checkArcsStayCircular(const std::map<int, Vec3>& image) const;
   std::vector<int> pointsUnder(const std::vector<EntityId>& shapes) const;  // sorted, unique

@@ -113,6 +113,7 @@ std::optional<std::pair<Vec3, double>> commonSphere(
 std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
   // The sides and top of a boundary layer are where its mesh puts them: no geometry of theirs.
   if (s.sweep && s.sweep->kind == ExtrusionMotion::Kind::Normals) return nullptr;
+  if (s.kind == SurfaceKind::Discrete) return nullptr;  // its mesh is all there is
   if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops).first;
   const std::vector<int>& loop = s.loops.front();
   if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion) {
@@ -170,6 +171,7 @@ void GeoFactory::synchronize(Model& model) const {
     surface.extrusion = s.extrusion;
     surface.periodic = s.periodic;
     surface.compound = s.compound;
+    surface.discrete = s.kind == SurfaceKind::Discrete;
     model.addSurface(std::move(surface));
   }
   for (const auto& [tag, v] : volumes_) {

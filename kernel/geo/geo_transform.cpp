@@ -35,6 +35,24 @@ void GeoFactory::requireShape(EntityId shape, const char* operation) const {
          " is not defined");
 }
 
+void GeoFactory::requireGeometric(EntityId shape, const char* operation) const {
+  requireShape(shape, operation);
+  const int tag = std::abs(shape.tag);
+  auto discrete = [&](int s) {
+    const auto it = surfaces_.find(std::abs(s));
+    return it != surfaces_.end() && it->second.kind == SurfaceKind::Discrete;
+  };
+  int found = 0;
+  if (shape.dim == 2 && discrete(tag)) found = tag;
+  if (shape.dim == 3)
+    for (const auto& shell : volumes_.at(tag).shells)
+      for (int s : shell)
+        if (!found && discrete(s)) found = std::abs(s);
+  if (found)
+    fail(operation, ": surface ", found,
+         " comes from a merged mesh file; its triangles cannot be moved, copied or extruded");
+}
+
 // Every point the shape's geometry depends on: the control points of its curves included
 // (appended with repeats; see pointsUnder).
 void GeoFactory::collectPoints(EntityId shape, std::vector<int>& out) const {
@@ -67,7 +85,7 @@ std::vector<int> GeoFactory::pointsUnder(const std::vector<EntityId>& shapes) co
 }
 
 void GeoFactory::transform(const std::vector<EntityId>& shapes, const AffineMap& map) {
-  for (EntityId shape : shapes) requireShape(shape, "Transformation");
+  for (EntityId shape : shapes) requireGeometric(shape, "Transformation");
   for (double x : map.m)
     if (!std::isfinite(x)) fail("Transformation: its parameters are not finite numbers");
   if (!std::isfinite(map.pivot.x) || !std::isfinite(map.pivot.y) || !std::isfinite(map.pivot.z))
@@ -175,7 +193,7 @@ int GeoFactory::copyVolume(int tag) {
 }
 
 std::vector<EntityId> GeoFactory::duplicate(const std::vector<EntityId>& shapes) {
-  for (EntityId shape : shapes) requireShape(shape, "Duplicata");
+  for (EntityId shape : shapes) requireGeometric(shape, "Duplicata");
   std::vector<EntityId> copies;
   for (EntityId shape : shapes) {
     const int tag = std::abs(shape.tag);
@@ -223,7 +241,11 @@ void GeoFactory::eraseEntity(EntityId e) {
   switch (e.dim) {
     case 0: points_.erase(e.tag); break;
     case 1: curves_.erase(e.tag); break;
-    case 2: surfaces_.erase(e.tag); break;
+    case 2:
+      surfaces_.erase(e.tag);
+      discreteBoxes_.erase(e.tag);
+      discreteFiles_.erase(e.tag);
+      break;
     default: volumes_.erase(e.tag); break;
   }
   int& mark = highWater_[static_cast<std::size_t>(e.dim)];
@@ -290,6 +312,9 @@ BoundingBox GeoFactory::boundingBox(EntityId shape) const {
     box.include(points_.at(tag).xyz);
   } else if (shape.dim == 1) {
     box = curveGeometry(curves_.at(tag))->boundingBox();
+  } else if (const auto it = discreteBoxes_.find(tag);
+             shape.dim == 2 && it != discreteBoxes_.end()) {
+    box = it->second;
   } else {
     for (EntityId b : boundary({shape}, false)) box.include(boundingBox(b));
   }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -72,7 +73,15 @@ void after(const UnrolledGeoHooks& hooks, EntityId e, std::ostream& out) {
 }
 
 void writeSurfaces(const GeoFactory& geo, std::ostream& out, const UnrolledGeoHooks& hooks) {
+  std::set<std::string> merged;
   for (const auto& [tag, s] : geo.surfaces()) {
+    if (s.kind == GeoFactory::SurfaceKind::Discrete) {
+      // The file's surfaces come back with their tags when it is merged again.
+      const std::string& file = geo.discreteFiles().at(tag);
+      if (merged.insert(file).second) out << "Merge \"" << file << "\";\n";
+      after(hooks, {2, tag}, out);
+      continue;
+    }
     std::vector<int> loop;
     for (const auto& part : s.loops) loop.insert(loop.end(), part.begin(), part.end());
     out << "Curve Loop(" << tag << ") = " << tagList(loop) << ";\n";

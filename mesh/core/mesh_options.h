@@ -3,6 +3,8 @@
 
 namespace geomesh {
 
+class Mesh;
+
 namespace post {
 class ViewStore;
 }
@@ -41,6 +43,9 @@ struct MeshOptions {
   double smoothRatio = 1.8;        // Mesh.SmoothRatio: metric gradation (anisotropic 2D)
   // The session's views, for Background Mesh View and PostView fields; null when none.
   const post::ViewStore* views = nullptr;
+  // The mesh of the merged file that the model's discrete surfaces come from (Merge
+  // "x.stl"): their triangles are copied from it, never meshed again. Null when none.
+  const Mesh* discreteMesh = nullptr;
 };
 
 }  // namespace geomesh
