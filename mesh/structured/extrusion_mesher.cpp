@@ -443,52 +443,39 @@ const ExtrusionRecord* ExtrusionMesher::imageRecord(EntityId id) const {
   return it == tops.end() ? nullptr : it->second;
 }
 
-bool ExtrusionMesher::waitsForSurfaces(EntityId id) const {
-  auto grownFromSurfaces = [&](const ExtrusionRecord* record) {
-    return record && isBoundaryLayer(*record) &&
-           normals_->fromSurfaces(record->motion->layerIndex);
+std::vector<const ExtrusionRecord*> ExtrusionMesher::layerRecords(EntityId id) const {
+  std::vector<const ExtrusionRecord*> records;
+  auto add = [&](const ExtrusionRecord* record) {
+    if (record && isBoundaryLayer(*record)) records.push_back(record);
   };
   if (id.dim == 1) {
     if (touchesLayer(id)) {
       const ModelCurve& curve = *model_.curve(id.tag);
       for (int end : {curve.startPoint, curve.endPoint})
-        if (const auto it = layerPoints_.find(end);
-            it != layerPoints_.end() && grownFromSurfaces(it->second))
-          return true;
+        if (const auto it = layerPoints_.find(end); it != layerPoints_.end()) add(it->second);
     }
-    return grownFromSurfaces(sweepRecord(id.tag)) || grownFromSurfaces(imageRecord(id));
+    add(sweepRecord(id.tag));
+    add(imageRecord(id));
+  } else if (const ModelSurface* surface = id.dim == 2 ? model_.surface(id.tag) : nullptr) {
+    add(surface->extrusion ? &*surface->extrusion : nullptr);
+    add(imageRecord(id));
   }
-  if (id.dim != 2) return false;
-  const ModelSurface* surface = model_.surface(id.tag);
-  if (!surface) return false;
-  if (grownFromSurfaces(surface->extrusion ? &*surface->extrusion : nullptr) ||
-      grownFromSurfaces(imageRecord(id)))
-    return true;
+  return records;
+}
+
+bool ExtrusionMesher::waitsForSurfaces(EntityId id) const {
+  for (const ExtrusionRecord* record : layerRecords(id))
+    if (normals_->fromSurfaces(record->motion->layerIndex)) return true;
+  if (id.dim != 2 || !model_.surface(id.tag)) return false;
   for (int c : model_.boundary(id))
     if (waitsForSurfaces({1, std::abs(c)})) return true;
   return false;
 }
 
 bool ExtrusionMesher::layerReady(EntityId id, const Mesh& mesh) const {
-  auto blocked = [&](const ExtrusionRecord* record) {
-    return record && isBoundaryLayer(*record) &&
-           !normals_->sourcesMeshed(mesh, record->motion->layerIndex);
-  };
-  if (id.dim == 1) {
-    if (touchesLayer(id)) {
-      const ModelCurve& curve = *model_.curve(id.tag);
-      for (int end : {curve.startPoint, curve.endPoint})
-        if (const auto it = layerPoints_.find(end);
-            it != layerPoints_.end() && blocked(it->second))
-          return false;
-    }
-    return !blocked(sweepRecord(id.tag)) && !blocked(imageRecord(id));
-  }
-  if (id.dim != 2) return true;
-  const ModelSurface* surface = model_.surface(id.tag);
-  if (!surface) return true;
-  if (blocked(surface->extrusion ? &*surface->extrusion : nullptr) || blocked(imageRecord(id)))
-    return false;
+  for (const ExtrusionRecord* record : layerRecords(id))
+    if (!normals_->sourcesMeshed(mesh, record->motion->layerIndex)) return false;
+  if (id.dim != 2 || !model_.surface(id.tag)) return true;
   for (int c : model_.boundary(id)) {
     const EntityMesh* em = mesh.find({1, std::abs(c)});
     if (!em || em->elementCount() == 0) return false;

@@ -69,6 +69,9 @@ class ExtrusionMesher {
 
  private:
   const ExtrusionRecord* sweepRecord(int curveTag) const;
+  // The boundary-layer extrusions the curve or surface comes from: its sweep or its top's,
+  // and for a curve those that moved its ends.
+  std::vector<const ExtrusionRecord*> layerRecords(EntityId id) const;
   void implySideSweeps(const ModelSurface& surface);
 
   const Model& model_;

@@ -46,6 +46,13 @@ std::vector<NodeIndex> prismsOf(const Mesh& mesh) {
   return all;
 }
 
+// Every corner of every prism turns the right way.
+void expectNoInvertedPrism(const Mesh& mesh, const std::vector<NodeIndex>& prisms) {
+  for (std::size_t e = 0; e < prisms.size(); e += 6)
+    for (double j : cornerJacobians(mesh, std::span(prisms).subspan(e, 6)))
+      EXPECT_GT(j, 0) << "prism " << e / 6;
+}
+
 // The heights of the prisms' nodes, those within 1e-12 of each other taken as one.
 std::vector<double> levelsOf(const Mesh& mesh, const std::vector<NodeIndex>& prisms) {
   std::set<double> all;
@@ -254,9 +261,7 @@ TEST(BoundaryLayerExtrusion, LayersGrowingTowardsEachOtherAreMadeThinnerWithAWar
   const Mesh& mesh = run.session.mesh();
   const std::vector<NodeIndex> prisms = prismsOf(mesh);
   ASSERT_FALSE(prisms.empty());
-  for (std::size_t e = 0; e < prisms.size(); e += 6)
-    for (double j : cornerJacobians(mesh, std::span(prisms).subspan(e, 6)))
-      EXPECT_GT(j, 0) << "prism " << e / 6;
+  expectNoInvertedPrism(mesh, prisms);
   const std::vector<double> z = levelsOf(mesh, prisms);
   ASSERT_EQ(z.size(), 10u);          // 2 + 2 cells on each side, 5 levels
   EXPECT_NEAR(z[2], 0.0225, 1e-12);  // the floor's layer: 0.04 and 0.08 at 0.5625
@@ -280,9 +285,7 @@ TEST(BoundaryLayerExtrusion, ALayerGrowsFromTheTopOfAnotherLayer) {
   const Mesh& mesh = run.session.mesh();
   const std::vector<NodeIndex> prisms = prismsOf(mesh);
   ASSERT_FALSE(prisms.empty());
-  for (std::size_t e = 0; e < prisms.size(); e += 6)
-    for (double j : cornerJacobians(mesh, std::span(prisms).subspan(e, 6)))
-      EXPECT_GT(j, 0) << "prism " << e / 6;
+  expectNoInvertedPrism(mesh, prisms);
   const std::vector<double> z = levelsOf(mesh, prisms);
   ASSERT_EQ(z.size(), 6u);
   const double expected[] = {0, 0.01, 0.02, 0.02 + 0.1 / 3, 0.02 + 0.2 / 3, 0.12};

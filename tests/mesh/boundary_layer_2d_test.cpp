@@ -32,6 +32,28 @@ void addLayer(Model& model, std::map<std::string, std::vector<double>> options) 
   model.meshConstraints().boundaryLayerFields = {1};
 }
 
+// The options of a layer of quadrangles on `curves`: first cell `size`, growing by `ratio`
+// below `thickness`.
+std::map<std::string, std::vector<double>> wallLayer(std::vector<double> curves, double size,
+                                                     double ratio, double thickness) {
+  return {{"CurvesList", std::move(curves)},
+          {"Size", {size}},
+          {"Ratio", {ratio}},
+          {"Thickness", {thickness}},
+          {"Quads", {1}}};
+}
+
+struct Meshed {
+  Mesh mesh;
+  RecordingSink log;
+};
+
+Meshed meshed(const Model& model) {
+  Meshed m;
+  generateMesh(model, {}, 2, m.mesh, m.log);
+  return m;
+}
+
 double signedArea(const Mesh& mesh, std::span<const NodeIndex> n) {
   double area = 0;
   for (std::size_t k = 0; k < n.size(); ++k) {
@@ -107,14 +129,8 @@ Model channel(double height, double h) {
 
 TEST(BoundaryLayer2D, FlatWallHeightsFollowTheGeometricLaw) {
   Model model = channel(0.4, 0.1);
-  addLayer(model, {{"CurvesList", {1}},
-                   {"Size", {0.01}},
-                   {"Ratio", {1.2}},
-                   {"Thickness", {0.05}},
-                   {"Quads", {1}}});
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  addLayer(model, wallLayer({1}, 0.01, 1.2, 0.05));
+  auto [mesh, log] = meshed(model);
   EXPECT_TRUE(log.warnings.empty());
   for (double x : {0.1, 0.5, 0.9}) {
     const std::vector<double> ys = columnAt(mesh, x, 0.1);
@@ -137,9 +153,7 @@ TEST(BoundaryLayer2D, WithoutQuadsEachCellIsTwoTriangles) {
   Model model = channel(0.4, 0.1);
   addLayer(model,
            {{"EdgesList", {1}}, {"hwall_n", {0.01}}, {"Ratio", {1.2}}, {"Thickness", {0.05}}});
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  auto [mesh, log] = meshed(model);
   const SurfaceFigures f = figures(mesh, 1);
   EXPECT_EQ(f.quadrangles, 0u);
   EXPECT_EQ(columnAt(mesh, 0.5, 0.1).size(), 4u);
@@ -150,15 +164,9 @@ TEST(BoundaryLayer2D, WithoutQuadsEachCellIsTwoTriangles) {
 
 TEST(BoundaryLayer2D, RecombineSurfaceKeepsTheLayerAndRecombinesTheRest) {
   Model model = channel(0.4, 0.05);
-  addLayer(model, {{"CurvesList", {1}},
-                   {"Size", {0.01}},
-                   {"Ratio", {1.2}},
-                   {"Thickness", {0.05}},
-                   {"Quads", {1}}});
+  addLayer(model, wallLayer({1}, 0.01, 1.2, 0.05));
   model.meshConstraints().recombinedSurfaces[1] = 45;
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  auto [mesh, log] = meshed(model);
   // The layer's columns are as without recombination: the recombination moves no layer node.
   for (double x : {0.1, 0.5, 0.9}) {
     const std::vector<double> ys = columnAt(mesh, x, 0.05);
@@ -180,14 +188,8 @@ TEST(BoundaryLayer2D, RecombineSurfaceKeepsTheLayerAndRecombinesTheRest) {
 TEST(BoundaryLayer2D, BothChannelWallsAndAConcaveCorner) {
   Model model = channel(0.4, 0.1);
   // Layers on the bottom (1) and left (4) walls: they meet at the concave corner (0, 0).
-  addLayer(model, {{"CurvesList", {1, 4}},
-                   {"Size", {0.01}},
-                   {"Ratio", {1.2}},
-                   {"Thickness", {0.05}},
-                   {"Quads", {1}}});
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  addLayer(model, wallLayer({1, 4}, 0.01, 1.2, 0.05));
+  auto [mesh, log] = meshed(model);
   // The corner's column runs along the bisector, its points where the two layers meet.
   for (double h : {0.01, 0.022, 0.0364}) {
     bool found = false;
@@ -218,14 +220,8 @@ TEST(BoundaryLayer2D, LayersMeetingAtAConcaveCornerAcrossSeveralCellsDoNotOverla
       0.02);
   b.surface({c});
   Model model = std::move(b.model);
-  addLayer(model, {{"CurvesList", {1, 2, 3, 4, 5}},
-                   {"Size", {0.002}},
-                   {"Ratio", {1.2}},
-                   {"Thickness", {0.03}},
-                   {"Quads", {1}}});
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  addLayer(model, wallLayer({1, 2, 3, 4, 5}, 0.002, 1.2, 0.03));
+  auto [mesh, log] = meshed(model);
   for (const std::string& w : log.warnings)
     EXPECT_EQ(w.find("could not be joined"), std::string::npos) << w;
   // 141 wall segments of 7 cells each, less the corners' cut columns.
@@ -246,11 +242,7 @@ TEST(BoundaryLayer2D, AWallTipBetweenTwoColumnsCutsTheCellsItReaches) {
                                        0.05);
   b.surface({c});
   Model model = std::move(b.model);
-  addLayer(model, {{"CurvesList", {1}},
-                   {"Size", {0.01}},
-                   {"Ratio", {1.2}},
-                   {"Thickness", {0.1}},
-                   {"Quads", {1}}});
+  addLayer(model, wallLayer({1}, 0.01, 1.2, 0.1));
   Mesh mesh;
   RecordingSink log;
   ASSERT_NO_THROW(generateMesh(model, {}, 2, mesh, log));
@@ -356,14 +348,8 @@ TEST(BoundaryLayer2D, DefaultFanAtAConvexCornerOfAnObstacle) {
 
 TEST(BoundaryLayer2D, FacingLayersInAThinChannelAreShortenedWithAWarning) {
   Model model = channel(0.05, 0.02);
-  addLayer(model, {{"CurvesList", {1, 3}},
-                   {"Size", {0.004}},
-                   {"Ratio", {1.2}},
-                   {"Thickness", {0.05}},
-                   {"Quads", {1}}});
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  addLayer(model, wallLayer({1, 3}, 0.004, 1.2, 0.05));
+  auto [mesh, log] = meshed(model);
   ASSERT_FALSE(log.warnings.empty());
   EXPECT_NE(log.warnings.front().find("surface 1 shortened"), std::string::npos);
   const std::vector<double> ys = columnAt(mesh, 0.5, 0.026);
@@ -378,9 +364,7 @@ TEST(BoundaryLayer2D, FacingLayersInAThinChannelAreShortenedWithAWarning) {
 TEST(BoundaryLayer2D, ACurvedSurfaceIsMeshedWithoutLayerAndAWarning) {
   Model model = testing::spherePatchModel(0.2);
   addLayer(model, {{"CurvesList", {1}}, {"Size", {0.01}}, {"Thickness", {0.05}}});
-  Mesh mesh;
-  RecordingSink log;
-  generateMesh(model, {}, 2, mesh, log);
+  auto [mesh, log] = meshed(model);
   EXPECT_TRUE(std::any_of(log.warnings.begin(), log.warnings.end(), [](const std::string& w) {
     return w.find("surface 1 is not plane") != std::string::npos;
   }));
