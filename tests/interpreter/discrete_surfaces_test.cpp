@@ -157,5 +157,20 @@ TEST_F(DiscreteSurfaces, MovingOrExtrudingThemIsAnError) {
   }
 }
 
+TEST_F(DiscreteSurfaces, TheUnrolledScriptMergesTheFileAgain) {
+  writeSpheres();
+  const std::string script =
+      "Merge \"spheres.stl\";\nSurface Loop(1) = {2};\nVolume(1) = {1};\n";
+  ScriptRun first;
+  runMain(first, script + "Save \"again.geo_unrolled\";\n");
+  api::generate(first.session, 3);
+  ScriptRun again;
+  again.run("Merge \"again.geo_unrolled\";\n", (dir_ / "replay.geo").string());
+  api::generate(again.session, 3);
+  EXPECT_GT(again.session.mesh().elementCount(3), 0u);
+  EXPECT_EQ(again.session.mesh().elementCount(3), first.session.mesh().elementCount(3));
+  EXPECT_NEAR(measure(again.session.mesh(), 3), measure(first.session.mesh(), 3), 1e-12);
+}
+
 }  // namespace
 }  // namespace geomesh::testing
