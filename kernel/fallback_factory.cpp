@@ -2,6 +2,7 @@
 #include "kernel/fallback_factory.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace geomesh {
 
@@ -76,9 +77,23 @@ void FallbackFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
   route([&](GeometryFactory& f) { f.addFillingSurface(tag, curveLoops, through); });
 }
 void FallbackFactory::addSurfaceLoop(int tag, std::vector<int> surfaces) {
+  auto fallbacks = [&](int s) {
+    return fallback_.contains({2, std::abs(s)}) && !primary_.contains({2, std::abs(s)});
+  };
+  const bool theFallbacks =
+      !surfaces.empty() && std::all_of(surfaces.begin(), surfaces.end(), fallbacks);
+  if (theFallbacks) {
+    fallback_.addSurfaceLoop(tag, std::move(surfaces));
+    fallbackLoops_.insert(tag);
+    return;
+  }
   route([&](GeometryFactory& f) { f.addSurfaceLoop(tag, surfaces); });
 }
 void FallbackFactory::addVolume(int tag, std::vector<int> surfaceLoops) {
+  auto fallbacks = [&](int l) { return fallbackLoops_.contains(std::abs(l)); };
+  const bool theFallbacks =
+      !surfaceLoops.empty() && std::all_of(surfaceLoops.begin(), surfaceLoops.end(), fallbacks);
+  if (theFallbacks) return fallback_.addVolume(tag, std::move(surfaceLoops));
   route([&](GeometryFactory& f) { f.addVolume(tag, surfaceLoops); });
 }
 int FallbackFactory::addBox(int tag, Vec3 corner, Vec3 extent) {
@@ -218,6 +233,7 @@ void FallbackFactory::synchronize(Model& model) const {
 void FallbackFactory::clear() {
   primary_.clear();
   fallback_.clear();
+  fallbackLoops_.clear();
 }
 void FallbackFactory::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks) const {
   fallback_.writeUnrolled(out, hooks);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <set>
 
 #include "kernel/geometry_factory.h"
 
@@ -98,6 +99,9 @@ class FallbackFactory final : public GeometryFactory {
   GeometryFactory& primary_;
   GeometryFactory& fallback_;
   Handover handover_;
+  // Surface loops made of the fallback's surfaces alone (the discrete surfaces of a merged
+  // mesh file, say): they, and the volumes they bound, are the fallback's.
+  std::set<int> fallbackLoops_;
 };
 
 }  // namespace geomesh

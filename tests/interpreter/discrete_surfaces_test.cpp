@@ -172,5 +172,14 @@ TEST_F(DiscreteSurfaces, TheUnrolledScriptMergesTheFileAgain) {
   EXPECT_NEAR(measure(again.session.mesh(), 3), measure(first.session.mesh(), 3), 1e-12);
 }
 
+TEST_F(DiscreteSurfaces, TheOpenCascadeFactoryHandsTheirVolumesToTheBuiltInOne) {
+  writeSpheres();
+  ScriptRun run;
+  runMain(run, "SetFactory(\"OpenCASCADE\");\nMerge \"spheres.stl\";\n"
+               "Surface Loop(1) = {2};\nVolume(1) = {1};\n");
+  api::generate(run.session, 3);
+  EXPECT_NEAR(measure(run.session.mesh(), 3), enclosed(run.session.mesh(), 2), 1e-9);
+}
+
 }  // namespace
 }  // namespace geomesh::testing
