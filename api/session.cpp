@@ -41,8 +41,9 @@ bool Session::addsToDiscreteSurfaces() const {
   return factories_.current().physicalGroups().size() != discretePhysicals_;
 }
 
-// The surfaces of a file that holds closed surfaces only (no curve, no volume, no point
-// element) join the built-in factory as discrete surfaces, with the file's surface groups.
+// The surfaces of a file that holds surfaces only (no curve, no volume, no point element)
+// join the built-in factory as discrete surfaces, with the file's surface groups. Whether
+// they close is seen when a volume is meshed (checkDiscreteShells).
 bool Session::registerDiscreteSurfaces(const std::string& file) {
   if (model_.surfaces().empty() || !model_.curves().empty() || !model_.volumes().empty() ||
       !model_.points().empty())

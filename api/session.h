@@ -75,8 +75,8 @@ class Session {
   void clearModel();
   // Replaces the model and the mesh by those of a mesh file, read by the format its
   // extension names (Merge "f.msh"; in a script). The mesh is then kept as read: meshing
-  // leaves it alone. When the file holds closed surfaces only (an STL, PLY, OFF file...),
-  // they also become discrete surfaces of the built-in factory, which Surface Loop, Volume
+  // leaves it alone. When the file holds surfaces only (an STL, PLY, OFF file...), they
+  // also become discrete surfaces of the built-in factory, which Surface Loop, Volume
   // and Physical statements may use: a script that adds to them makes the model from the
   // factories, and meshing copies their triangles from the file and meshes the rest (the
   // volumes they bound). Other geometry besides a merged mesh is refused when the model is

@@ -15,7 +15,7 @@ DefineConstant[
 ];
 
 // Merge reads the file next to this script. STL, PLY, OFF and the other mesh formats geomesh
-// reads become discrete surfaces this way when they hold closed surfaces only; an STL file
+// reads become discrete surfaces this way when they hold surfaces only; an STL file
 // with several `solid` sections gives one surface per section, numbered from 1 in order.
 Merge "t21_knob.stl";
 

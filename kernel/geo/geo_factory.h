@@ -69,7 +69,7 @@ class GeoFactory final : public GeometryFactory {
   void addPhysicalGroup(int dim, int tag, const std::string& name,
                         const std::vector<int>& entities) override;
 
-  // A surface of a merged mesh file (`file`), closed (no boundary curve): it has no geometry,
+  // A surface of a merged mesh file (`file`), without boundary curves: it has no geometry,
   // only the file's triangles, and lies in `box`. Surface loops and volumes may use it; it
   // cannot be moved, copied or extruded. The unrolled script merges the file again.
   void addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file);
