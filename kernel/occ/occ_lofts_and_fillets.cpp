@@ -1,8 +1,12 @@
 // The OpenCASCADE factory's lofts (ThruSections), fillets and chamfers of volumes.
+#include <BRepBndLib.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepGProp.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -10,6 +14,7 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -40,6 +45,24 @@ std::vector<EntityId> bindVolumes(OccShapes& shapes, const TopoDS_Shape& result,
   return out;
 }
 
+// Whether two sections are the same curve in space (OpenCASCADE fails, and may crash, on a
+// loft between coincident sections): the same length, centre of mass and bounding box.
+bool coincident(const TopoDS_Wire& a, const TopoDS_Wire& b) {
+  GProp_GProps pa, pb;
+  BRepGProp::LinearProperties(a, pa);
+  BRepGProp::LinearProperties(b, pb);
+  Bnd_Box ba, bb;
+  BRepBndLib::Add(a, ba);
+  BRepBndLib::Add(b, bb);
+  if (ba.IsVoid() || bb.IsVoid()) return false;
+  const double size = std::max(ba.CornerMin().Distance(ba.CornerMax()), 1e-300);
+  const double tolerance = std::max(1e-7, 1e-9 * size);
+  return std::abs(pa.Mass() - pb.Mass()) < tolerance &&
+         pa.CentreOfMass().Distance(pb.CentreOfMass()) < tolerance &&
+         ba.CornerMin().Distance(bb.CornerMin()) < tolerance &&
+         ba.CornerMax().Distance(bb.CornerMax()) < tolerance;
+}
+
 }  // namespace
 
 std::vector<EntityId> OccFactory::addThruSections(int tag, const std::vector<int>& wires,
@@ -49,6 +72,14 @@ std::vector<EntityId> OccFactory::addThruSections(int tag, const std::vector<int
   if (wires.size() < 2) throw GeometryError(what + " needs at least two curve loops or wires");
   if (tag >= 0 && shapes_->contains(makeSolid ? 3 : 2, tag))
     throw GeometryError(what + ": " + entityName(makeSolid ? 3 : 2, tag) + " already exists");
+  for (std::size_t k = 1; k < wires.size(); ++k) {
+    const TopoDS_Wire& a = TopoDS::Wire(shapes_->findWire(std::abs(wires[k - 1])));
+    const TopoDS_Wire& b = TopoDS::Wire(shapes_->findWire(std::abs(wires[k])));
+    if (coincident(a, b))
+      throw GeometryError(what + ": sections " + std::to_string(std::abs(wires[k - 1])) +
+                          " and " + std::to_string(std::abs(wires[k])) +
+                          " coincide; a loft needs distinct consecutive sections");
+  }
   const TopoDS_Shape result = guarded(what, [&] {
     BRepOffsetAPI_ThruSections loft(makeSolid, ruled);
     for (int w : wires) loft.AddWire(TopoDS::Wire(shapes_->findWire(std::abs(w))));

@@ -1,6 +1,8 @@
 // The OpenCASCADE factory's whole circles and ellipses, lofts, fillets and chamfers.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <numbers>
 
 #include "kernel/geometry_error.h"
@@ -33,6 +35,25 @@ TEST(OccLofts, CirclesEllipsesAndThruSections) {
   EXPECT_NEAR(occ.pointCoordinates(occ.boundary({{1, 21}}, false)[1].tag).x, 6, 1e-12);
   EXPECT_THROW(occ.addEllipse(22, {0, 0, 0}, 1, 2, {}), GeometryError);
   EXPECT_THROW(occ.addThruSections(30, {1}, false), GeometryError);
+}
+
+TEST(OccLofts, CoincidentConsecutiveSectionsAreAnErrorNotACrash) {
+  // OpenCASCADE's smooth loft dereferences a null pointer between two equal sections.
+  OccFactory occ;
+  occ.addCircle(1, {0, 0, 0}, 0.5, {});
+  occ.addCurveLoop(1, {1});
+  occ.addCircle(2, {0, 0, 1}, 0.1, {});
+  occ.addCurveLoop(2, {2});
+  occ.addCircle(3, {0, 0, 1}, 0.1, {});
+  occ.addCurveLoop(3, {3});
+  try {
+    occ.addThruSections(1, {1, 2, 3}, false);
+    FAIL() << "a loft through coincident sections was built";
+  } catch (const GeometryError& e) {
+    EXPECT_NE(std::string(e.what()).find("sections 2 and 3 coincide"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(occ.addThruSections(1, {1, 2}, false), (std::vector<EntityId>{{3, 1}}));
 }
 
 TEST(OccLofts, FilletAndChamferReplaceTheVolume) {
