@@ -446,9 +446,9 @@ void meshTetrahedralVolumes(const Model& model, const MeshOptions& options,
 void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
                   MessageSink& log) {
   mesh.clear();
-  if (options.discreteMesh && dim >= 2) copyDiscreteSurfaces(model, *options.discreteMesh, mesh);
   if (const std::string why = unsupportedOrderReason(options.elementOrder); !why.empty())
     throw std::invalid_argument("Mesh.ElementOrder: " + why);
+  if (options.discreteMesh && dim >= 2) copyDiscreteSurfaces(model, *options.discreteMesh, mesh);
   SizeRules rules = SizeRules::from(model, options);
   // Full-quad recombination (of every surface, or of those asked for) meshes twice as coarse,
   // then splits each element into quadrangles, which halves the sizes back.

@@ -476,10 +476,8 @@ bool ExtrusionMesher::layerReady(EntityId id, const Mesh& mesh) const {
   for (const ExtrusionRecord* record : layerRecords(id))
     if (!normals_->sourcesMeshed(mesh, record->motion->layerIndex)) return false;
   if (id.dim != 2 || !model_.surface(id.tag)) return true;
-  for (int c : model_.boundary(id)) {
-    const EntityMesh* em = mesh.find({1, std::abs(c)});
-    if (!em || em->elementCount() == 0) return false;
-  }
+  for (int c : model_.boundary(id))
+    if (!isMeshed(mesh, {1, std::abs(c)})) return false;
   return true;
 }
 
