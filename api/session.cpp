@@ -6,6 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "api/discrete_model.h"
 #include "api/partitioning.h"
 #include "io/formats.h"
 #include "mesh/pipeline/generate.h"
@@ -52,7 +53,7 @@ bool Session::registerDiscreteSurfaces(const std::string& file) {
     BoundingBox box;
     if (const EntityMesh* em = mesh_.find({2, tag}))
       for (NodeIndex n : em->nodes) box.include(mesh_.node(n));
-    factories_.addDiscreteSurface(tag, box, file);
+    factories_.discrete().addDiscreteSurface(tag, box, file, {});
     discreteSurfaces_.insert(tag);
   }
   for (const auto& [id, group] : model_.physicalGroups()) {
@@ -61,6 +62,8 @@ bool Session::registerDiscreteSurfaces(const std::string& file) {
     ++discretePhysicals_;
   }
   discreteMesh_ = mesh_;
+  discrete_.reset();
+  if (discreteFile_.empty()) discreteFile_ = file;
   return true;
 }
 
@@ -159,6 +162,8 @@ void Session::clearModel() {
   discreteMesh_ = Mesh();
   discreteSurfaces_.clear();
   discretePhysicals_ = 0;
+  discrete_.reset();
+  discreteFile_.clear();
 }
 
 void Session::recordOrigin(EntityId entity, const SourceLocation& where) {

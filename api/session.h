@@ -23,6 +23,9 @@
 
 namespace geomesh {
 
+struct DiscreteModel;     // api/discrete_model.h
+struct DiscreteTopology;  // mesh/discrete/classification.h
+
 // Everything one run owns: options, the geometry factories, the model, the mesh, and where
 // messages and script output go. No global state: several sessions can coexist. Scripts run
 // in a session through interpreter/run_script.h; the command line and scripts act on it
@@ -83,6 +86,21 @@ class Session {
   // next synchronized. Throws std::runtime_error (MshReadError for a malformed MSH file).
   void readMesh(const std::string& path);
   bool meshFromFile() const { return meshFromFile_; }
+
+  // On the merged discrete surfaces (api/discrete_surfaces.cpp), as the statements of the same
+  // names. ClassifySurfaces{angle, boundary, forReparametrization, curveAngle}: welds the
+  // triangles, orients them alike, and splits them into surfaces where neighbours meet at more
+  // than `angle` (radians; with `includeBoundary`, also where the merged surfaces meet), with
+  // curves where surfaces meet (broken where they turn by more than `curveAngle`) and points
+  // where curves meet; the merged surfaces are replaced by them. CreateTopology: the same
+  // entities for the surfaces as they are. CreateGeometry: gives every discrete curve and
+  // surface a geometry (a surface: a one-to-one map of its triangles to the plane, after
+  // splitting those that have none), so that they are meshed anew. Each throws
+  // std::runtime_error when there are no merged triangles.
+  void classifySurfaces(double angle, bool includeBoundary, bool forReparametrization,
+                        double curveAngle);
+  void createTopology();
+  void createGeometry();
   // Whether any geometry factory holds an entity.
   bool hasGeometry() const;
 
@@ -127,6 +145,12 @@ class Session {
   std::set<int> discreteSurfaces_;
   std::size_t discretePhysicals_ = 0;
   bool registerDiscreteSurfaces(const std::string& file);
+  // The triangles of the discrete surfaces, gathered from discreteMesh_ on first use.
+  std::unique_ptr<DiscreteModel> discrete_;
+  std::string discreteFile_;
+  DiscreteModel& discreteModel();
+  void replaceDiscreteTopology(const DiscreteTopology& topology);
+  void rebuildDiscreteMesh();
   // Whether the script defined anything besides the merged discrete surfaces.
   bool addsToDiscreteSurfaces() const;
   // Physical group members the model lacked at a synchronization: (dim, group, member).

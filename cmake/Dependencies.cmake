@@ -90,3 +90,7 @@ if(GEOMESH_TESTS)
   geomesh_require(GTest_FOUND "GoogleTest" "libgtest-dev")
 endif()
 find_package(Threads REQUIRED)
+
+# Eigen: sparse linear solves (maps of merged triangulations to the plane), header-only.
+find_package(Eigen3 3.3 QUIET NO_MODULE)
+geomesh_require(Eigen3_FOUND "Eigen" "libeigen3-dev")

@@ -155,6 +155,12 @@ class Interpreter {
   void executeRounding(const ast::CommandStmt& command, const SourceLocation& where);
   std::vector<EntityId> shapesFromFile(const ast::Expr& shape);
   void executeHealShapes(const ast::CommandStmt& command, const SourceLocation& where);
+  // interpreter/discrete_statements.cpp
+  std::vector<double> braceNumbers(const ast::CommandStmt& command, const char* usage,
+                                   const SourceLocation& where);
+  void classifySurfaces(const ast::CommandStmt& command, const SourceLocation& where);
+  void createTopology(const ast::CommandStmt& command, const SourceLocation& where);
+  void createGeometry(const ast::CommandStmt& command, const SourceLocation& where);
   SolidModeling::HealingOptions healingOptions() const;
   void applyImportOptions(SolidModeling& solids) const;
   std::vector<EntityId> closestShapes(const ast::Expr& shape);

@@ -37,10 +37,9 @@ SolidModeling& FactorySelection::solidModeler() { return factories_->occ; }
 
 GeometryFactory& FactorySelection::builtIn() { return factories_->builtIn; }
 
-void FactorySelection::addDiscreteSurface(int tag, const BoundingBox& box,
-                                          const std::string& file) {
-  factories_->builtIn.addDiscreteSurface(tag, box, file);
-}
+DiscreteEntities& FactorySelection::discrete() { return factories_->builtIn; }
+
+const DiscreteEntities& FactorySelection::discrete() const { return factories_->builtIn; }
 
 void FactorySelection::onHandover(FallbackFactory::Handover handover) {
   factories_->occFirst.onHandover(std::move(handover));

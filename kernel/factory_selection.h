@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "kernel/discrete_entities.h"
 #include "kernel/fallback_factory.h"
 
 namespace geomesh {
@@ -29,9 +30,9 @@ class FactorySelection {
 
   // The built-in factory, whichever is selected (what a merged mesh file adds goes there).
   GeometryFactory& builtIn();
-  // A closed surface of a merged mesh file, in the built-in factory (GeoFactory's
-  // addDiscreteSurface).
-  void addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file);
+  // The built-in factory's discrete entities (merged triangulations).
+  DiscreteEntities& discrete();
+  const DiscreteEntities& discrete() const;
 
   // Clears the model's entities, then adds those of every factory.
   void synchronize(Model& model) const;

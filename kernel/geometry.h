@@ -74,6 +74,13 @@ class SurfaceGeometry {
     (void)signedCurve, (void)t;
     return std::nullopt;
   }
+  // The largest principal curvature at uv when the surface knows it better than finite
+  // differences of its normals would (a piecewise-linear surface, whose normal jumps across its
+  // triangles); nullopt otherwise.
+  virtual std::optional<double> curvature(Vec2 uv) const {
+    (void)uv;
+    return std::nullopt;
+  }
 };
 
 }  // namespace geomesh

@@ -95,6 +95,9 @@ struct ModelPoint {
   int tag = 0;
   Vec3 xyz;
   double meshSize = 0;  // 0: no size prescribed at this point
+  // A vertex of a merged triangulation (a corner ClassifySurfaces found): its node is the
+  // triangulation's.
+  bool discrete = false;
 };
 
 struct ModelCurve {
@@ -109,6 +112,10 @@ struct ModelCurve {
   // The built-in kernel's curves count in the model's size box by their points only (an arc
   // bulging past its ends does not widen it), as the reference measures its models.
   bool boxedByPoints = false;
+  // A curve ClassifySurfaces found on a merged triangulation, not yet given a geometry by
+  // CreateGeometry: its mesh is the triangulation's edges along it (its geometry, the polyline
+  // through them, only locates it).
+  bool discrete = false;
 };
 
 struct ModelSurface {
@@ -122,7 +129,8 @@ struct ModelSurface {
   std::optional<ExtrusionRecord> extrusion = std::nullopt;
   std::optional<Periodicity> periodic = std::nullopt;
   std::vector<int> compound = {};
-  // From a merged mesh file (Merge "x.stl"): no geometry; its mesh is the file's triangles.
+  // From a merged mesh file (Merge "x.stl"), and not given a geometry by CreateGeometry: no
+  // geometry; its mesh is the file's triangles.
   bool discrete = false;
 };
 

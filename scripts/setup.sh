@@ -12,7 +12,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libtet1.5-dev
   liblemon-dev
-  libmetis-dev libcgns-dev
+  libmetis-dev libcgns-dev libeigen3-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-visualization-dev libocct-data-exchange-dev
   libgtest-dev

@@ -168,6 +168,7 @@ void GeoFactory::mergeCurves() {
   std::unordered_map<std::uint64_t, std::vector<const Curve*>> byEnds;
   std::map<int, int> replacement;
   for (const auto& [tag, curve] : curves_) {
+    if (!curve.trace.empty()) continue;  // two discrete curves may join the same points
     const auto low = static_cast<std::uint32_t>(std::min(curve.start(), curve.end()));
     const auto high = static_cast<std::uint32_t>(std::max(curve.start(), curve.end()));
     auto& group = byEnds[(std::uint64_t{low} << 32) | high];

@@ -144,7 +144,9 @@ std::shared_ptr<const CurveGeometry> GeoFactory::curveGeometry(const Curve& c) c
       return std::make_shared<BSplineGeometry>(BSplineGeometry::uniform(std::move(xyz), closed));
     case CurveKind::Bezier:
       return std::make_shared<BSplineGeometry>(BSplineGeometry::bezier(std::move(xyz)));
-    case CurveKind::Other: break;
+    case CurveKind::Other:
+      if (!c.trace.empty()) return std::make_shared<PolylineGeometry>(c.trace);
+      break;
   }
   fail("Curve ", c.tag, ": unknown kind");
 }

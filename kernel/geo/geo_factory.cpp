@@ -129,18 +129,6 @@ void GeoFactory::addPlaneSurface(int tag, std::vector<int> curveLoops) {
   noteTag(2, tag);
 }
 
-void GeoFactory::addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file) {
-  requireNew(surfaces_, tag, "Surface");
-  surfaces_[tag] = Surface{tag, SurfaceKind::Discrete};
-  discreteBoxes_[tag] = box;
-  discreteFiles_[tag] = file;
-  if (!box.empty()) {
-    bounds_.include(box.min);
-    bounds_.include(box.max);
-  }
-  noteTag(2, tag);
-}
-
 void GeoFactory::addFillingSurface(int tag, std::vector<int> curveLoops,
                                    const std::vector<int>& /*through*/) {
   requireNew(surfaces_, tag, "Surface");

@@ -5,10 +5,12 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "kernel/affine_map.h"
+#include "kernel/discrete_entities.h"
 #include "kernel/extrusion_motion.h"
 #include "kernel/geometry_factory.h"
 #include "kernel/model.h"
@@ -19,7 +21,7 @@ namespace geomesh {
 // one call at a time, as a script states them, and checked immediately (an undefined point or
 // curve throws GeometryError naming its tag); synchronize() builds the Model from them.
 // As in Gmsh, a tag cannot be redefined: reusing one throws ("Point 1 already exists").
-class GeoFactory final : public GeometryFactory {
+class GeoFactory final : public GeometryFactory, public DiscreteEntities {
  public:
   std::string name() const override { return "Built-in"; }
 
@@ -69,12 +71,32 @@ class GeoFactory final : public GeometryFactory {
   void addPhysicalGroup(int dim, int tag, const std::string& name,
                         const std::vector<int>& entities) override;
 
-  // A surface of a merged mesh file (`file`), without boundary curves: it has no geometry,
-  // only the file's triangles, and lies in `box`. Surface loops and volumes may use it; it
-  // cannot be moved, copied or extruded. The unrolled script merges the file again.
-  void addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file);
+  // A surface of a merged mesh file (`file`): it has no geometry, only the file's triangles,
+  // and lies in `box`; `loops` are its boundary curves (signed, first the outer one), none
+  // for a surface as merged. Surface loops and volumes may use it; it cannot be moved, copied
+  // or extruded. The unrolled script merges the file again.
+  void addDiscreteSurface(int tag, const BoundingBox& box, const std::string& file,
+                          std::vector<std::vector<int>> loops) override;
+  // A corner of a merged triangulation, and a curve along its edges through `trace` (the
+  // triangulation's vertices, from the start point's to the end point's; the same point at
+  // both ends of a closed curve). Both cannot be moved, copied or extruded either.
+  void addDiscretePoint(int tag, Vec3 xyz) override;
+  void addDiscreteCurve(int tag, int startPoint, int endPoint, std::vector<Vec3> trace) override;
+  // CreateGeometry: the discrete curve gets the polyline through its trace as its geometry and
+  // the discrete surface `geometry` (a map of its triangles to the plane); both are then
+  // meshed anew like any other entity.
+  void setDiscreteCurveGeometry(int tag) override;
+  void setDiscreteSurfaceGeometry(int tag,
+                                  std::shared_ptr<const SurfaceGeometry> geometry) override;
+  bool isDiscrete(EntityId e) const override;
   // The file each discrete surface comes from.
   const std::map<int, std::string>& discreteFiles() const { return discreteFiles_; }
+  // Statements that changed the merged triangulations since they were merged
+  // (ClassifySurfaces, CreateGeometry...), in order, as the unrolled script repeats them.
+  void noteDiscreteStatement(std::string statement) override {
+    discreteStatements_.push_back(std::move(statement));
+  }
+  const std::vector<std::string>& discreteStatements() const { return discreteStatements_; }
 
   // Surface(tag) = {loop}: a surface filling a loop of 3 or 4 curves by transfinite
   // interpolation of its sides.
@@ -184,6 +206,10 @@ class GeoFactory final : public GeometryFactory {
     std::vector<double> knots = {};  // a Nurbs curve's (then a BSpline of this degree)
     int degree = 0;
     std::optional<Vec3> normal = std::nullopt;  // a circle arc's, from Plane{..}
+    // A discrete curve's vertices (kind Other; see addDiscreteCurve), and whether
+    // CreateGeometry made it a geometric curve.
+    std::vector<Vec3> trace = {};
+    bool withGeometry = false;
     int start() const { return points.front(); }
     int end() const { return points.back(); }
   };
@@ -201,6 +227,8 @@ class GeoFactory final : public GeometryFactory {
     std::optional<Periodicity> periodic = std::nullopt;
     std::vector<int> embeddedPoints = {};
     std::vector<int> embeddedCurves = {};
+    // A discrete surface's, from CreateGeometry.
+    std::shared_ptr<const SurfaceGeometry> discreteGeometry = nullptr;
   };
   struct Volume {
     int tag;
@@ -228,6 +256,8 @@ class GeoFactory final : public GeometryFactory {
   std::map<EntityId, PhysicalGroup> physicals_;
   std::map<int, BoundingBox> discreteBoxes_;  // discrete surface -> the box of its nodes
   std::map<int, std::string> discreteFiles_;  // discrete surface -> the file it comes from
+  std::set<int> discretePoints_;
+  std::vector<std::string> discreteStatements_;
   double tolerance_ = 1e-8;
   bool autoCoherence_ = true;
   bool returnLaterals_ = true;

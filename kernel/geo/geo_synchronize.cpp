@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <utility>
 
 #include "kernel/geo/geo_factory.h"
@@ -113,7 +114,7 @@ std::optional<std::pair<Vec3, double>> commonSphere(
 std::shared_ptr<const SurfaceGeometry> GeoFactory::surfaceGeometry(const Surface& s) const {
   // The sides and top of a boundary layer are where its mesh puts them: no geometry of theirs.
   if (s.sweep && s.sweep->kind == ExtrusionMotion::Kind::Normals) return nullptr;
-  if (s.kind == SurfaceKind::Discrete) return nullptr;  // its mesh is all there is
+  if (s.kind == SurfaceKind::Discrete) return s.discreteGeometry;  // null: its mesh is all
   if (s.kind == SurfaceKind::Plane) return fitPlaneSurface(s.tag, s.loops).first;
   const std::vector<int>& loop = s.loops.front();
   if (s.kind == SurfaceKind::Swept && s.sweep && s.extrusion) {
@@ -153,8 +154,14 @@ void GeoFactory::synchronize(Model& model) const {
       closingPoints.emplace(c.start(), geometry->point(geometry->range().min));
     geometries.emplace(tag, std::move(geometry));
   }
+  // A corner of a triangulation keeps the triangulation's node while a discrete curve without
+  // geometry (whose mesh is the triangulation's edges) ends there.
+  std::set<int> copiedCorners;
+  for (const auto& [tag, c] : curves_)
+    if (!c.trace.empty() && !c.withGeometry) copiedCorners.insert(c.points.begin(), c.points.end());
   for (const auto& [tag, p] : points_) {
     ModelPoint& point = model.addPoint(p);
+    point.discrete = p.discrete && copiedCorners.contains(tag);
     if (auto moved = closingPoints.find(tag); moved != closingPoints.end())
       point.xyz = moved->second;
   }
@@ -165,13 +172,14 @@ void GeoFactory::synchronize(Model& model) const {
     curve.embeddedPoints = c.embeddedPoints;
     curve.compound = c.compound;
     curve.boxedByPoints = true;
+    curve.discrete = !c.trace.empty() && !c.withGeometry;
   }
   for (const auto& [tag, s] : surfaces_) {
     ModelSurface surface{tag, s.loops, surfaceGeometry(s), s.embeddedPoints, s.embeddedCurves};
     surface.extrusion = s.extrusion;
     surface.periodic = s.periodic;
     surface.compound = s.compound;
-    surface.discrete = s.kind == SurfaceKind::Discrete;
+    surface.discrete = s.kind == SurfaceKind::Discrete && !s.discreteGeometry;
     model.addSurface(std::move(surface));
   }
   for (const auto& [tag, v] : volumes_) {

@@ -37,20 +37,17 @@ void GeoFactory::requireShape(EntityId shape, const char* operation) const {
 
 void GeoFactory::requireGeometric(EntityId shape, const char* operation) const {
   requireShape(shape, operation);
+  static constexpr const char* kLowerNames[] = {"point", "curve", "surface"};
   const int tag = std::abs(shape.tag);
-  auto discrete = [&](int s) {
-    const auto it = surfaces_.find(std::abs(s));
-    return it != surfaces_.end() && it->second.kind == SurfaceKind::Discrete;
-  };
-  int found = 0;
-  if (shape.dim == 2 && discrete(tag)) found = tag;
-  if (shape.dim == 3)
-    for (const auto& shell : volumes_.at(tag).shells)
-      for (int s : shell)
-        if (!found && discrete(s)) found = std::abs(s);
-  if (found)
-    fail(operation, ": surface ", found,
+  if (shape.dim < 3 && isDiscrete({shape.dim, tag}))
+    fail(operation, ": ", kLowerNames[shape.dim], " ", tag,
          " comes from a merged mesh file; its triangles cannot be moved, copied or extruded");
+  if (shape.dim != 3) return;
+  for (const auto& shell : volumes_.at(tag).shells)
+    for (int s : shell)
+      if (isDiscrete({2, std::abs(s)}))
+        fail(operation, ": surface ", std::abs(s),
+             " comes from a merged mesh file; its triangles cannot be moved, copied or extruded");
 }
 
 // Every point the shape's geometry depends on: the control points of its curves included
@@ -239,7 +236,10 @@ bool GeoFactory::isUsed(EntityId e) const {
 
 void GeoFactory::eraseEntity(EntityId e) {
   switch (e.dim) {
-    case 0: points_.erase(e.tag); break;
+    case 0:
+      points_.erase(e.tag);
+      discretePoints_.erase(e.tag);
+      break;
     case 1: curves_.erase(e.tag); break;
     case 2:
       surfaces_.erase(e.tag);

@@ -46,6 +46,7 @@ void writePoints(const GeoFactory& geo, std::ostream& out) {
   std::map<double, int> sizeVariable;  // mesh size -> n of cl__n, numbered as first met
   std::vector<double> order;
   for (const auto& [tag, p] : geo.points()) {
+    if (p.discrete) continue;  // the merged file's statements make it again
     const double size = p.meshSize > 0 ? p.meshSize : kUnsetMeshSize;
     if (sizeVariable.emplace(size, static_cast<int>(order.size()) + 1).second)
       order.push_back(size);
@@ -53,6 +54,7 @@ void writePoints(const GeoFactory& geo, std::ostream& out) {
   for (std::size_t i = 0; i < order.size(); ++i)
     out << "cl__" << i + 1 << " = " << number(order[i]) << ";\n";
   for (const auto& [tag, p] : geo.points()) {
+    if (p.discrete) continue;
     const double size = p.meshSize > 0 ? p.meshSize : kUnsetMeshSize;
     out << "Point(" << tag << ") = {" << number(p.xyz.x) << ", " << number(p.xyz.y) << ", "
         << number(p.xyz.z) << ", cl__" << sizeVariable.at(size) << "};\n";
@@ -78,7 +80,10 @@ void writeSurfaces(const GeoFactory& geo, std::ostream& out, const UnrolledGeoHo
     if (s.kind == GeoFactory::SurfaceKind::Discrete) {
       // The file's surfaces come back with their tags when it is merged again.
       const std::string& file = geo.discreteFiles().at(tag);
-      if (merged.insert(file).second) out << "Merge \"" << file << "\";\n";
+      if (merged.insert(file).second) {
+        out << "Merge \"" << file << "\";\n";
+        for (const std::string& statement : geo.discreteStatements()) out << statement << "\n";
+      }
       after(hooks, {2, tag}, out);
       continue;
     }
@@ -127,6 +132,10 @@ void GeoFactory::writeUnrolled(std::ostream& out, const UnrolledGeoHooks& hooks)
 void writeUnrolledGeo(const GeoFactory& geo, std::ostream& out, const UnrolledGeoHooks& hooks) {
   writePoints(geo, out);
   for (const auto& [tag, c] : geo.curves()) {
+    if (!c.trace.empty()) {  // discrete: made again with the merged file's surfaces
+      after(hooks, {1, tag}, out);
+      continue;
+    }
     if (c.knots.empty()) {
       out << curveKeyword(c.kind) << "(" << tag << ") = " << tagList(c.points) << ";\n";
     } else {

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "mesh/curves/curve_mesher.h"
+#include "mesh/pipeline/discrete_copy.h"
 #include "mesh/high_order/set_order.h"
 #include "mesh/structured/extrusion_mesher.h"
 #include "mesh/structured/meshing_order.h"
@@ -58,90 +59,13 @@ class StageTimer {
 void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields,
                 Mesh& mesh) {
   for (const auto& [tag, point] : model.points()) {
+    if (mesh.find({0, tag})) continue;  // a corner of a merged triangulation, copied
     const NodeIndex node = mesh.addNode(point.xyz);
     const double field = fields.at(point.xyz, {0, tag});
     mesh.setNodeSize(node, rules.finish(std::min(rules.pointSize(point), field)));
     EntityMesh& em = mesh.entity({0, tag});
     em.nodes.push_back(node);
     em.block(ElementType::Point1).nodes.push_back(node);
-  }
-}
-
-// The triangles of the model's discrete surfaces, copied from the merged file's mesh with
-// their nodes (shared between surfaces as in the file); each node's target size is the mean
-// length of its edges, which the volume mesher grades from.
-void copyDiscreteSurfaces(const Model& model, const Mesh& from, Mesh& mesh) {
-  constexpr NodeIndex kNoNode = std::numeric_limits<NodeIndex>::max();
-  std::vector<NodeIndex> copied(from.nodeCount(), kNoNode);
-  std::vector<double> lengths(from.nodeCount(), 0);
-  std::vector<int> edges(from.nodeCount(), 0);
-  for (const auto& [tag, surface] : model.surfaces()) {
-    if (!surface.discrete) continue;
-    const EntityMesh* source = from.find({2, tag});
-    if (!source) throw MeshError({2, tag}, "the merged mesh file holds no triangles of it");
-    EntityMesh& em = mesh.entity({2, tag});
-    for (const ElementBlock& block : source->blocks) {
-      if (dimension(block.type) != 2) continue;
-      ElementBlock& to = em.block(block.type);
-      const std::size_t corners = static_cast<std::size_t>(vertexCount(family(block.type)));
-      for (std::size_t e = 0; e < block.size(); ++e) {
-        const auto nodes = block.element(e);
-        for (std::size_t k = 0; k < nodes.size(); ++k) {
-          NodeIndex& c = copied[nodes[k]];
-          if (c == kNoNode) {
-            c = mesh.addNode(from.node(nodes[k]));
-            em.nodes.push_back(c);
-          }
-          to.nodes.push_back(c);
-          if (k >= corners) continue;
-          const NodeIndex next = nodes[(k + 1) % corners];
-          const double l = distance(from.node(nodes[k]), from.node(next));
-          lengths[nodes[k]] += l;
-          lengths[next] += l;
-          ++edges[nodes[k]];
-          ++edges[next];
-        }
-      }
-    }
-  }
-  for (NodeIndex n = 0; n < from.nodeCount(); ++n)
-    if (copied[n] != kNoNode && edges[n] > 0) mesh.setNodeSize(copied[n], lengths[n] / edges[n]);
-}
-
-// A volume bounded by discrete surfaces needs their triangles to close: every edge of the
-// shells' triangles in exactly two of them. Throws MeshError naming the volume and an edge.
-void checkDiscreteShells(const Model& model, const Mesh& mesh) {
-  for (const auto& [tag, volume] : model.volumes()) {
-    bool discrete = false;
-    for (const std::vector<int>& shell : volume.shells)
-      for (int s : shell)
-        if (const ModelSurface* surface = model.surface(std::abs(s)); surface && surface->discrete)
-          discrete = true;
-    if (!discrete) continue;
-    for (const std::vector<int>& shell : volume.shells) {
-      std::map<std::uint64_t, int> uses;
-      for (int s : shell) {
-        const EntityMesh* em = mesh.find({2, std::abs(s)});
-        const ElementBlock* triangles = em ? em->findBlock(ElementType::Triangle3) : nullptr;
-        if (!triangles) continue;
-        for (std::size_t e = 0; e < triangles->size(); ++e) {
-          const auto t = triangles->element(e);
-          for (std::size_t k = 0; k < 3; ++k) ++uses[edgeKey(t[k], t[(k + 1) % 3])];
-        }
-      }
-      std::size_t open = 0;
-      std::uint64_t first = 0;
-      for (const auto& [edge, count] : uses)
-        if (count != 2 && open++ == 0) first = edge;
-      if (open == 0) continue;
-      const Vec3 a = mesh.node(static_cast<NodeIndex>(first >> 32));
-      const Vec3 b = mesh.node(static_cast<NodeIndex>(first & 0xffffffffu));
-      std::ostringstream why;
-      why << "the triangles of its surface loop do not close: " << open
-          << " edges are not shared by exactly two of them, the first from (" << a.x << ", "
-          << a.y << ", " << a.z << ") to (" << b.x << ", " << b.y << ", " << b.z << ")";
-      throw MeshError({3, tag}, why.str());
-    }
   }
 }
 
@@ -161,7 +85,7 @@ void meshCurves(const Model& model, const SizeRules& rules, const SizeFields& fi
   std::vector<int> followers;  // curves that end where a boundary layer moves their ends
   for (const PlannedEntity& p : meshingOrder(model, 1, links)) {
     const EntityId id{1, p.tag};
-    if (extruded.waitsForSurfaces(id) != layers) continue;
+    if (extruded.waitsForSurfaces(id) != layers || model.curve(p.tag)->discrete) continue;
     if (layers && (hasMesh(mesh, id) || !extruded.layerReady(id, mesh))) continue;
     if (p.method == MeshingMethod::Own && extruded.touchesLayer(id))
       followers.push_back(p.tag);
@@ -448,7 +372,8 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
   mesh.clear();
   if (const std::string why = unsupportedOrderReason(options.elementOrder); !why.empty())
     throw std::invalid_argument("Mesh.ElementOrder: " + why);
-  if (options.discreteMesh && dim >= 2) copyDiscreteSurfaces(model, *options.discreteMesh, mesh);
+  if (options.discreteMesh && dim >= 1)
+    copyDiscreteEntities(model, *options.discreteMesh, dim, mesh);
   SizeRules rules = SizeRules::from(model, options);
   // Full-quad recombination (of every surface, or of those asked for) meshes twice as coarse,
   // then splits each element into quadrangles, which halves the sizes back.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 
@@ -111,6 +112,7 @@ bool hasPole(const Model& model, const ModelSurface& surface) {
 // Principal curvatures are the roots k of det(II - k I) = 0, with the first fundamental form
 // I = (E, F, G) and the second II = (L, M, N) = -(n_u.x_u, (n_u.x_v + n_v.x_u) / 2, n_v.x_v).
 double surfaceCurvature(const SurfaceGeometry& g, Vec2 uv) {
+  if (const std::optional<double> known = g.curvature(uv)) return *known;
   const ParamBox box = g.bounds();
   const double hu = 1e-5 * std::max(1.0, std::abs(box.u.max - box.u.min));
   const double hv = 1e-5 * std::max(1.0, std::abs(box.v.max - box.v.min));
