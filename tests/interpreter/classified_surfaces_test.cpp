@@ -8,6 +8,7 @@
 
 #include "api/meshing.h"
 #include "mesh/core/quality.h"
+#include "mesh_measures.h"
 #include "script_runner.h"
 #include "tests/scratch.h"
 
@@ -48,17 +49,6 @@ class ClassifiedSurfaces : public ::testing::Test {
   fs::path dir_;
 };
 
-double measure(const Mesh& mesh, int dim) {
-  double total = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != dim) continue;
-    for (const ElementBlock& block : em.blocks)
-      for (std::size_t e = 0; e < block.size(); ++e)
-        total += elementMeasure(mesh, block.type, block.element(e));
-  }
-  return total;
-}
-
 // The volume the triangles of every surface enclose (divergence theorem), of either sign.
 double enclosed(const Mesh& mesh) {
   double v = 0;
@@ -77,13 +67,6 @@ std::pair<double, double> fileMeasures(const fs::path& file) {
   ScriptRun plain;
   plain.run("Merge \"" + file.filename().string() + "\";\n", (file.parent_path() / "m.geo").string());
   return {measure(plain.session.mesh(), 2), enclosed(plain.session.mesh())};
-}
-
-std::size_t count(const Mesh& mesh, ElementType type) {
-  std::size_t n = 0;
-  for (const auto& [id, em] : mesh.entities())
-    if (const ElementBlock* b = em.findBlock(type)) n += b->size();
-  return n;
 }
 
 TEST_F(ClassifiedSurfaces, ABoxSplitsIntoItsSixFaces) {

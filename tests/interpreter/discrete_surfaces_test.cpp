@@ -8,6 +8,7 @@
 
 #include "api/meshing.h"
 #include "mesh/core/quality.h"
+#include "mesh_measures.h"
 #include "script_runner.h"
 #include "tests/scratch.h"
 
@@ -48,17 +49,6 @@ class DiscreteSurfaces : public ::testing::Test {
   fs::path dir_;
 };
 
-double measure(const Mesh& mesh, int dim, EntityId only = {-1, 0}) {
-  double total = 0;
-  for (const auto& [id, em] : mesh.entities()) {
-    if (id.dim != dim || (only.dim >= 0 && !(id == only))) continue;
-    for (const ElementBlock& block : em.blocks)
-      for (std::size_t e = 0; e < block.size(); ++e)
-        total += elementMeasure(mesh, block.type, block.element(e));
-  }
-  return total;
-}
-
 // The volume a closed surface's triangles enclose (divergence theorem), whatever their
 // orientation.
 double enclosed(const Mesh& mesh, int surface) {
@@ -69,13 +59,6 @@ double enclosed(const Mesh& mesh, int surface) {
     v += dot(mesh.node(n[0]), cross(mesh.node(n[1]), mesh.node(n[2])));
   }
   return std::abs(v) / 6;
-}
-
-std::size_t count(const Mesh& mesh, ElementType type) {
-  std::size_t n = 0;
-  for (const auto& [id, em] : mesh.entities())
-    if (const ElementBlock* b = em.findBlock(type)) n += b->size();
-  return n;
 }
 
 TEST_F(DiscreteSurfaces, VolumesBetweenMergedSurfacesAreMeshedAndKeepTheirTriangles) {
