@@ -63,10 +63,10 @@ std::vector<std::uint32_t> loopVertices(const DiscreteModel& d, const std::vecto
   return cycle;
 }
 
-std::vector<std::uint32_t> trianglesOf(const DiscreteModel& d, int surface) {
-  std::vector<std::uint32_t> triangles;
-  for (std::uint32_t t = 0; t < d.surfaceOf.size(); ++t)
-    if (d.surfaceOf[t] == surface) triangles.push_back(t);
+// The triangles of each surface, ascending.
+std::map<int, std::vector<std::uint32_t>> trianglesBySurface(const DiscreteModel& d) {
+  std::map<int, std::vector<std::uint32_t>> triangles;
+  for (std::uint32_t t = 0; t < d.surfaceOf.size(); ++t) triangles[d.surfaceOf[t]].push_back(t);
   return triangles;
 }
 
@@ -265,8 +265,11 @@ void Session::createGeometry() {
     std::vector<int> labels = d.surfaceOf;
     int next = *std::max_element(labels.begin(), labels.end()) + 1;
     bool split = false;
+    const std::map<int, std::vector<std::uint32_t>> bySurface = trianglesBySurface(d);
     for (const auto& [tag, loops] : d.loops) {
-      const std::vector<std::uint32_t> triangles = trianglesOf(d, tag);
+      const auto found = bySurface.find(tag);
+      const std::vector<std::uint32_t> triangles =
+          found == bySurface.end() ? std::vector<std::uint32_t>{} : found->second;
       std::vector<std::vector<std::uint32_t>> cycles;
       for (const std::vector<int>& loop : loops) cycles.push_back(loopVertices(d, loop));
       ParametrizationResult result = parametrizePatch(d.triangulation, triangles, cycles);

@@ -10,7 +10,7 @@
 #include "mesh/core/quality.h"
 #include "mesh_measures.h"
 #include "script_runner.h"
-#include "tests/scratch.h"
+#include "scratch_dir_test.h"
 
 namespace geomesh::testing {
 namespace {
@@ -19,34 +19,22 @@ namespace fs = std::filesystem;
 
 constexpr double kPi = 3.14159265358979323846;
 
-class ClassifiedSurfaces : public ::testing::Test {
+class ClassifiedSurfaces : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = scratch::path(
-        "classified-" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  ClassifiedSurfaces() : ScratchDirTest("classified-") {}
 
-  void run(ScriptRun& run, const std::string& text) {
-    run.run(text, (dir_ / "main.geo").string());
-  }
   // The surface mesh of an OpenCASCADE solid, saved as `file` (an STL of one solid).
   void writeStl(const std::string& solid, const std::string& file, double size) {
     ScriptRun make;
-    run(make, "SetFactory(\"OpenCASCADE\");\n" + solid + "\nMesh.MeshSizeMax = " +
+    runMain(make, "SetFactory(\"OpenCASCADE\");\n" + solid + "\nMesh.MeshSizeMax = " +
                   std::to_string(size) + ";\nMesh 2;\nSave \"" + file + "\";\n");
   }
   // Merges the file, classifies it, creates the geometry and fills it: the session, meshed.
   void remesh(ScriptRun& session, const std::string& file, const std::string& extra = "") {
-    run(session, "Merge \"" + file + "\";\nClassifySurfaces{40 * Pi / 180, 1, 0, Pi};\n" +
+    runMain(session, "Merge \"" + file + "\";\nClassifySurfaces{40 * Pi / 180, 1, 0, Pi};\n" +
                      "CreateGeometry;\nSurface Loop(1) = Surface{:};\nVolume(1) = {1};\n" + extra);
     api::generate(session.session, 3);
   }
-
-  fs::path dir_;
 };
 
 // The volume the triangles of every surface enclose (divergence theorem), of either sign.
@@ -72,7 +60,7 @@ std::pair<double, double> fileMeasures(const fs::path& file) {
 TEST_F(ClassifiedSurfaces, ABoxSplitsIntoItsSixFaces) {
   writeStl("Box(1) = {0, 0, 0, 1, 2, 3};", "box.stl", 0.2);
   ScriptRun session;
-  run(session, "Merge \"box.stl\";\nClassifySurfaces{40 * Pi / 180, 1, 0, Pi};\n");
+  runMain(session, "Merge \"box.stl\";\nClassifySurfaces{40 * Pi / 180, 1, 0, Pi};\n");
   session.session.synchronize();
   const Model& model = session.session.model();
   EXPECT_EQ(model.points().size(), 8u);
@@ -98,10 +86,10 @@ TEST_F(ClassifiedSurfaces, ABoxSplitsIntoItsSixFaces) {
 TEST_F(ClassifiedSurfaces, WithoutCreateGeometryTheTrianglesAreKept) {
   writeStl("Box(1) = {0, 0, 0, 1, 2, 3};", "box.stl", 0.2);
   ScriptRun plain;
-  run(plain, "Merge \"box.stl\";\n");
+  runMain(plain, "Merge \"box.stl\";\n");
   const std::size_t triangles = count(plain.session.mesh(), ElementType::Triangle3);
   ScriptRun session;
-  run(session, "Merge \"box.stl\";\nClassifySurfaces{40 * Pi / 180, 1, 0, Pi};\n");
+  runMain(session, "Merge \"box.stl\";\nClassifySurfaces{40 * Pi / 180, 1, 0, Pi};\n");
   api::generate(session.session, 2);
   const Mesh& mesh = session.session.mesh();
   EXPECT_EQ(count(mesh, ElementType::Triangle3), triangles);
@@ -175,7 +163,7 @@ TEST_F(ClassifiedSurfaces, ATorusWithItsHandleIsSplitUntilEveryPartMaps) {
 
 TEST_F(ClassifiedSurfaces, CreateTopologyKeepsTheMergedSurfacesApart) {
   ScriptRun make;
-  run(make, R"(
+  runMain(make, R"(
     SetFactory("OpenCASCADE");
     Sphere(1) = {0, 0, 0, 1};
     Sphere(2) = {3, 0, 0, 1};
@@ -184,7 +172,7 @@ TEST_F(ClassifiedSurfaces, CreateTopologyKeepsTheMergedSurfacesApart) {
     Save "two.stl";
   )");
   ScriptRun session;
-  run(session, "Merge \"two.stl\";\nCreateTopology;\n");
+  runMain(session, "Merge \"two.stl\";\nCreateTopology;\n");
   session.session.synchronize();
   // One surface per connected part, no curve: both spheres are closed.
   EXPECT_EQ(session.session.model().surfaces().size(), 2u);
@@ -206,7 +194,7 @@ TEST_F(ClassifiedSurfaces, FlippedTrianglesAreTurnedWithAWarning) {
 TEST_F(ClassifiedSurfaces, WithoutMergedTrianglesItIsALocatedError) {
   ScriptRun session;
   try {
-    run(session, "Point(1) = {0, 0, 0};\nClassifySurfaces{Pi / 4, 1, 0};\n");
+    runMain(session, "Point(1) = {0, 0, 0};\nClassifySurfaces{Pi / 4, 1, 0};\n");
     FAIL() << "classified nothing";
   } catch (const ScriptError& e) {
     const std::string what = e.what();

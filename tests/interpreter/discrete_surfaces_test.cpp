@@ -10,7 +10,7 @@
 #include "mesh/core/quality.h"
 #include "mesh_measures.h"
 #include "script_runner.h"
-#include "tests/scratch.h"
+#include "scratch_dir_test.h"
 
 namespace geomesh::testing {
 namespace {
@@ -19,20 +19,10 @@ namespace fs = std::filesystem;
 
 constexpr double kPi = 3.14159265358979323846;
 
-class DiscreteSurfaces : public ::testing::Test {
+class DiscreteSurfaces : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = scratch::path(
-        "discrete-" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  DiscreteSurfaces() : ScratchDirTest("discrete-") {}
 
-  std::string runMain(ScriptRun& run, const std::string& text) {
-    return run.run(text, (dir_ / "main.geo").string());
-  }
   // Two concentric spheres (radii 1 and 0.4) written as an STL file of two solids.
   void writeSpheres() {
     ScriptRun make;
@@ -46,7 +36,6 @@ class DiscreteSurfaces : public ::testing::Test {
     )");
   }
 
-  fs::path dir_;
 };
 
 // The volume a closed surface's triangles enclose (divergence theorem), whatever their
