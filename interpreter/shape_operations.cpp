@@ -322,9 +322,8 @@ void Interpreter::deleteShapes(const ast::CommandStmt& command, const SourceLoca
   }
 }
 
-// Compound Curve{..}; Compound Surface{..}; recorded (and written back by -0), but the
-// entities are meshed one by one: meshing them as one is not supported yet, which the
-// script is told.
+// Compound Curve{..}; Compound Surface{..}: recorded on the entities (and written back by -0);
+// the mesher meshes each compound as one (mesh/pipeline/compound). Compound Volume is not.
 void Interpreter::executeCompound(const ast::CommandStmt& command, const SourceLocation& where) {
   if (!command.shape) return unsupportedStatement(command, where);
   const int dim = entityDimension({command.words[1]});
@@ -333,9 +332,7 @@ void Interpreter::executeCompound(const ast::CommandStmt& command, const SourceL
   } catch (const GeometryError& error) {
     fail(where, error.what());
   }
-  warn(where, "'Compound " + command.words[1] + "' is not supported yet: its " +
-                  (dim == 1 ? "curves" : dim == 2 ? "surfaces" : "volumes") +
-                  " are meshed one by one, not as one");
+  if (dim == 3) warn(where, "'Compound Volume' is not supported: its volumes are meshed one by one");
 }
 
 // Point{..} In Surface{..}; Curve{..} In Volume{..}; ...: entities embedded in a host.

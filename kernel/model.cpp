@@ -153,14 +153,14 @@ BoundingBox Model::boundingBox(EntityId e) const {
 }
 
 BoundingBox Model::boundingBox() const {
-  BoundingBox box;
+  BoundingBox box = sizeBoxExtra_;
   for (const auto& [tag, p] : points_) box.include(p.xyz);
   for (const auto& [tag, c] : curves_) box.include(boundingBox({1, tag}));
   return box;
 }
 
 BoundingBox Model::sizeBox() const {
-  BoundingBox box;
+  BoundingBox box = sizeBoxExtra_;
   for (const auto& [tag, p] : points_) box.include(p.xyz);
   for (const auto& [tag, c] : curves_)
     if (!c.boxedByPoints) box.include(boundingBox({1, tag}));

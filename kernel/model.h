@@ -173,6 +173,9 @@ class Model {
   // The box whose diagonal sets the default mesh size: every point, and the curves not
   // boxedByPoints.
   BoundingBox sizeBox() const;
+  // Widens sizeBox() by `box`: a model made from another, with fewer entities, keeps the
+  // other's default size.
+  void widenSizeBox(const BoundingBox& box) { sizeBoxExtra_.include(box); }
   const ModelPoint* point(int tag) const;
   const ModelCurve* curve(int tag) const;
   const ModelSurface* surface(int tag) const;
@@ -201,6 +204,7 @@ class Model {
   std::map<int, ModelSurface> surfaces_;
   std::map<int, ModelVolume> volumes_;
   std::map<EntityId, PhysicalGroup> physicals_;
+  BoundingBox sizeBoxExtra_;
   std::map<EntityId, std::vector<int>> upward_;  // maintained as entities are added
   MeshConstraints meshConstraints_;
 };

@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <tuple>
+#include <type_traits>
 
 #include "mesh/checks/high_order_check.h"
 #include "mesh/structured/periodic.h"
@@ -158,8 +160,70 @@ class Checker {
       problem(id, nodeName(em->nodes[0]) + " is not at the point");
   }
 
+  // The curves of `entity`'s compound (itself included, each once) that the model has, if
+  // there are two or more; empty otherwise.
+  template <typename Entity>
+  std::vector<const Entity*> compoundOf(const Entity& entity) const {
+    std::vector<const Entity*> group;
+    for (int tag : entity.compound) {
+      const Entity* member = nullptr;
+      if constexpr (std::is_same_v<Entity, ModelCurve>)
+        member = model_.curve(tag);
+      else
+        member = model_.surface(tag);
+      if (member && std::find(group.begin(), group.end(), member) == group.end())
+        group.push_back(member);
+    }
+    if (group.size() < 2) group.clear();
+    return group;
+  }
+
+  // Whether a compound curve was meshed as one: a point where two of its curves meet got no
+  // node (the compound's mesh runs through it).
+  static bool meshedAsOne(const std::vector<const ModelCurve*>& group,
+                          const std::map<int, int>& degree, const Mesh& mesh) {
+    if (group.empty()) return false;
+    for (const auto& [point, count] : degree) {
+      const EntityMesh* em = count == 2 ? mesh.find({0, point}) : nullptr;
+      if (count == 2 && (!em || em->nodes.empty())) return true;
+    }
+    return false;
+  }
+
+  // A compound curve meshed as one: the segments of all its curves form one chain between the
+  // chain's ends (a closed chain: a cycle); each node on its own curve.
+  void checkCompoundCurve(const ModelCurve& curve, const std::vector<const ModelCurve*>& group,
+                          const std::map<int, int>& degree) {
+    int first = curve.tag;
+    for (const ModelCurve* c : group) first = std::min(first, c->tag);
+    if (first != curve.tag) return;  // checked with the first curve of the group
+    const EntityId id{1, curve.tag};
+    std::map<NodeIndex, int> uses;
+    for (const ModelCurve* c : group)
+      if (const EntityMesh* em = find({1, c->tag}))
+        if (const ElementBlock* lines = em->findBlock(ElementType::Line2))
+          for (NodeIndex n : lines->nodes) ++uses[n];
+    std::set<NodeIndex> ends;
+    for (const auto& [point, count] : degree)
+      if (count == 1)
+        if (const EntityMesh* em = find({0, point}); em && !em->nodes.empty())
+          ends.insert(em->nodes.front());
+    for (const auto& [node, count] : uses)
+      if (count != (ends.contains(node) ? 1 : 2))
+        return problem(id, "the line elements of its compound do not form one chain (" +
+                               nodeName(node) + " ends " + std::to_string(count) + " of them)");
+  }
+
   void checkCurve(const ModelCurve& curve) {
     const EntityId id{1, curve.tag};
+    const std::vector<const ModelCurve*> group = compoundOf(curve);
+    std::map<int, int> degree;  // per end point of the group's curves: how many curves end there
+    for (const ModelCurve* c : group) ++degree[c->startPoint], ++degree[c->endPoint];
+    if (meshedAsOne(group, degree, mesh_)) {
+      checkCompoundCurve(curve, group, degree);
+      checkCurveNodes(curve);
+      return;
+    }
     const EntityMesh* em = find(id);
     if (!em) return;  // not meshed (dimension 0 only)
     const ElementBlock* lines = em->findBlock(ElementType::Line2);
@@ -179,7 +243,13 @@ class Checker {
     for (std::size_t e = 1; e < lines->size(); ++e)
       if (lines->element(e)[0] != lines->element(e - 1)[1])
         return problem(id, "line elements do not form a chain");
-    if (!curve.geometry || em->parametric.size() != em->nodes.size()) return;
+    checkCurveNodes(curve);
+  }
+
+  void checkCurveNodes(const ModelCurve& curve) {
+    const EntityId id{1, curve.tag};
+    const EntityMesh* em = find(id);
+    if (!em || !curve.geometry || em->parametric.size() != em->nodes.size()) return;
     std::size_t reported = 0;
     for (std::size_t k = 0; k < em->nodes.size(); ++k) {
       const double d = distance(curve.geometry->point(em->parametric[k]), mesh_.node(em->nodes[k]));
@@ -246,7 +316,8 @@ class Checker {
 
   // Orientation against du x dv, non-flatness, and use of foreign nodes.
   void checkTriangles(EntityId id, const ModelSurface& surface, const EntityMesh& em,
-                      const ElementBlock& triangles) {
+                      const ElementBlock& triangles,
+                      const std::vector<const ModelSurface*>& compound) {
     // allowedStamp_[n] == stamp: n belongs to the surface or its closure.
     const std::uint32_t stamp = ++stamp_;
     allowedStamp_.resize(mesh_.nodeCount(), 0);
@@ -267,18 +338,24 @@ class Checker {
         ownUv_[em.nodes[k]] = {em.parametric[2 * k], em.parametric[2 * k + 1]};
       }
     auto own = [&](NodeIndex n) { return ownUvStamp_[n] == stamp; };
-    for (const std::vector<int>& loop : surface.loops)
-      for (int c : loop) {
-        allowEntity({1, std::abs(c)});
-        if (const ModelCurve* curve = model_.curve(std::abs(c)))
+    // A surface of a compound meshed as one may use the nodes of the others and their closures.
+    std::vector<const ModelSurface*> closures{&surface};
+    for (const ModelSurface* member : compound)
+      if (member != &surface) closures.push_back(member), allowEntity({2, member->tag});
+    for (const ModelSurface* s : closures) {
+      for (const std::vector<int>& loop : s->loops)
+        for (int c : loop) {
+          allowEntity({1, std::abs(c)});
+          if (const ModelCurve* curve = model_.curve(std::abs(c)))
+            allowEntity({0, curve->startPoint}), allowEntity({0, curve->endPoint});
+        }
+      for (int c : s->embeddedCurves) {
+        allowEntity({1, c});
+        if (const ModelCurve* curve = model_.curve(c))
           allowEntity({0, curve->startPoint}), allowEntity({0, curve->endPoint});
       }
-    for (int c : surface.embeddedCurves) {
-      allowEntity({1, c});
-      if (const ModelCurve* curve = model_.curve(c))
-        allowEntity({0, curve->startPoint}), allowEntity({0, curve->endPoint});
+      for (int p : s->embeddedPoints) allowEntity({0, p});
     }
-    for (int p : surface.embeddedPoints) allowEntity({0, p});
     std::size_t reported = 0;
     const SurfaceGeometry* g = surface.geometry.get();
     // Without a known boundary (MSH 2.2), the surface's closure is unknown too.
@@ -340,20 +417,59 @@ class Checker {
     return faces;
   }
 
+  // The surfaces of `surface`'s compound when it was meshed as one (a curve between two of
+  // them has no mesh), else empty.
+  std::vector<const ModelSurface*> compoundMeshedAsOne(const ModelSurface& surface) const {
+    std::vector<const ModelSurface*> group = compoundOf(surface);
+    std::map<int, int> uses;
+    for (const ModelSurface* s : group)
+      for (const auto& loop : s->loops)
+        for (int c : loop) ++uses[std::abs(c)];
+    for (const auto& [curve, count] : uses)
+      if (count == 2 && !find({1, curve})) return group;
+    return {};
+  }
+
+  // A compound meshed as one is conforming as a whole: its triangles together, bounded by the
+  // segments of the curves only one of its surfaces uses (the others have no mesh).
+  void checkCompoundConformity(const ModelSurface& surface,
+                               const std::vector<const ModelSurface*>& group) {
+    for (const ModelSurface* s : group)
+      if (s->tag < surface.tag) return;  // checked with the first surface of the group
+    ModelSurface whole;
+    whole.tag = surface.tag;
+    ElementBlock triangles;
+    for (const ModelSurface* s : group) {
+      whole.loops.insert(whole.loops.end(), s->loops.begin(), s->loops.end());
+      whole.embeddedCurves.insert(whole.embeddedCurves.end(), s->embeddedCurves.begin(),
+                                  s->embeddedCurves.end());
+      if (const EntityMesh* em = find({2, s->tag})) {
+        const ElementBlock faces = splitFaces(*em, true, 1);
+        triangles.nodes.insert(triangles.nodes.end(), faces.nodes.begin(), faces.nodes.end());
+      }
+    }
+    checkConformity({2, surface.tag}, whole, triangles);
+  }
+
   void checkSurface(const ModelSurface& surface) {
     const EntityId id{2, surface.tag};
+    const std::vector<const ModelSurface*> compound = compoundMeshedAsOne(surface);
+    if (!compound.empty()) checkCompoundConformity(surface, compound);
     const EntityMesh* em = find(id);
     if (!em) return;
     // Cut along the diagonal that recombination did not join across (corners 1 and 3), so
     // that a quadrangle straddling a curve edge shows.
     const ElementBlock triangles = splitFaces(*em, true, 1);
-    if (triangles.size() == 0) return problem(id, "has no triangles");
+    if (triangles.size() == 0) {
+      if (compound.empty()) problem(id, "has no triangles");
+      return;  // a small surface of a compound may get none
+    }
     for (NodeIndex n : triangles.nodes)
       if (n >= mesh_.nodeCount()) return;  // reported already
-    checkTriangles(id, surface, *em, triangles);
+    checkTriangles(id, surface, *em, triangles, compound);
     const ElementBlock otherHalves = splitFaces(*em, false, 0);
-    if (otherHalves.size() > 0) checkTriangles(id, surface, *em, otherHalves);
-    checkConformity(id, surface, triangles);
+    if (otherHalves.size() > 0) checkTriangles(id, surface, *em, otherHalves, compound);
+    if (compound.empty()) checkConformity(id, surface, triangles);
     checkSurfaceNodes(id, surface, *em);
   }
 

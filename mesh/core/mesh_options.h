@@ -41,6 +41,8 @@ struct MeshOptions {
   double optimizeThreshold = 0.3;  // Mesh.OptimizeThreshold (gamma)
   double anisoMax = 1e33;          // Mesh.AnisoMax: largest aspect ratio of the metric
   double smoothRatio = 1.8;        // Mesh.SmoothRatio: metric gradation (anisotropic 2D)
+  double compoundSizeFactor = 0.5;  // Mesh.CompoundMeshSizeFactor: a compound's first meshes
+  int compoundClassify = 1;         // Mesh.CompoundClassify
   // The session's views, for Background Mesh View and PostView fields; null when none.
   const post::ViewStore* views = nullptr;
   // The mesh of the merged file that the model's discrete surfaces come from (Merge

@@ -297,6 +297,11 @@ Vec2 DiscreteSurfaceGeometry::project(Vec3 p) const {
   return {b[0] * a.u + b[1] * c.u + b[2] * d.u, b[0] * a.v + b[1] * c.v + b[2] * d.v};
 }
 
+std::uint32_t DiscreteSurfaceGeometry::closestTriangle(Vec3 p) const {
+  Vec3 closest;
+  return search_->inSpace.closest(p, closest);
+}
+
 std::optional<Vec2> DiscreteSurfaceGeometry::curveParameters(int signedCurve, double t) const {
   const auto it = curves_.find(std::abs(signedCurve));
   if (it == curves_.end()) return std::nullopt;

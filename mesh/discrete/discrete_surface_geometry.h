@@ -2,6 +2,7 @@
 // of its triangles to the plane that parametrizePatch made.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -50,6 +51,8 @@ class DiscreteSurfaceGeometry final : public SurfaceGeometry {
   std::optional<Vec2> curveParameters(int signedCurve, double t) const override;
   std::optional<double> curvature(Vec2 uv) const override;
 
+  // The local index (into map().triangles) of the triangle closest to p in space.
+  std::uint32_t closestTriangle(Vec3 p) const;
   const PatchMap& map() const { return map_; }
   std::span<const Vec3> points() const { return points_; }
 

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "mesh/curves/curve_mesher.h"
+#include "mesh/pipeline/compound.h"
 #include "mesh/pipeline/discrete_copy.h"
 #include "mesh/high_order/set_order.h"
 #include "mesh/structured/extrusion_mesher.h"
@@ -367,18 +368,17 @@ void meshTetrahedralVolumes(const Model& model, const MeshOptions& options,
 
 }  // namespace
 
-void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
-                  MessageSink& log) {
-  mesh.clear();
-  if (const std::string why = unsupportedOrderReason(options.elementOrder); !why.empty())
-    throw std::invalid_argument("Mesh.ElementOrder: " + why);
+namespace {
+
+// The stages from points to volumes, with the background sizes `fields`.
+void meshStages(const Model& model, const MeshOptions& options, int dim,
+                const SizeFields& fields, Mesh& mesh, MessageSink& log) {
   if (options.discreteMesh && dim >= 1)
     copyDiscreteEntities(model, *options.discreteMesh, dim, mesh);
   SizeRules rules = SizeRules::from(model, options);
   // Full-quad recombination (of every surface, or of those asked for) meshes twice as coarse,
   // then splits each element into quadrangles, which halves the sizes back.
   if (isFullQuad(options) && wantsAllQuadrangles(model, options) && dim >= 2) rules.factor *= 2;
-  const SizeFields fields(model, log, options);
   meshPoints(model, rules, fields, mesh);
   if (dim >= 1) {
     const StageTimer timer(1);
@@ -431,6 +431,31 @@ void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh&
       if (const std::string why = subdivideIntoHexahedra(model, mesh); !why.empty())
         log.warning("Mesh.SubdivisionAlgorithm 2: " + why + "; elements are not split");
   }
+}
+
+}  // namespace
+
+void generateMesh(const Model& model, const MeshOptions& options, int dim, Mesh& mesh,
+                  MessageSink& log) {
+  mesh.clear();
+  if (const std::string why = unsupportedOrderReason(options.elementOrder); !why.empty())
+    throw std::invalid_argument("Mesh.ElementOrder: " + why);
+  const SizeFields fields(model, log, options);
+  // Compounds: the surfaces of each first meshed on their own, finer, with nothing but their
+  // sizes (no recombination, order 1), then the model with each compound as one entity.
+  const PartMesher meshParts = [&](const Model& parts, double factor, Mesh& partsMesh) {
+    MeshOptions fine = options;
+    fine.sizeFactor *= factor;
+    fine.discreteMesh = nullptr;
+    fine.recombineAll = false;
+    fine.subdivisionAlgorithm = 0;
+    SilentSink quiet;
+    meshStages(parts, fine, 2, fields, partsMesh, quiet);
+  };
+  const std::optional<CompoundMeshing> compounds =
+      dim >= 1 ? planCompounds(model, options, dim, meshParts, log) : std::nullopt;
+  meshStages(compounds ? compounds->model : model, options, dim, fields, mesh, log);
+  if (compounds) compounds->classify(model, mesh);
   if (options.elementOrder > 1 && dim >= 1) raiseOrder(model, options, mesh, log);
 }
 

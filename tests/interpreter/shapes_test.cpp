@@ -64,11 +64,11 @@ TEST(Shapes, EmbeddingCompoundAndPeriodicity) {
   ScriptRun run;
   run.run(std::string(kSquare) + "Point(5) = {0.5, 0.5, 0};\nPoint{5} In Surface{1};\n"
           "Compound Curve{1, 2};\nPeriodic Curve{3} = {1} Translate{0, 1, 0};\n");
-  // The compound is recorded, but its curves are meshed one by one, which the script is told.
-  ASSERT_EQ(run.log.warnings.size(), 1u);
-  EXPECT_NE(run.log.warnings[0].find("'Compound Curve' is not supported yet"), std::string::npos);
+  // The compound is recorded on both curves; no warning.
+  EXPECT_TRUE(run.log.warnings.empty());
   run.session.synchronize();
   EXPECT_EQ(run.session.model().surface(1)->embeddedPoints, (std::vector<int>{5}));
+  EXPECT_EQ(run.session.model().curve(2)->compound, (std::vector<int>{1, 2}));
 }
 
 TEST(Shapes, CurvesAndSurfaces) {
