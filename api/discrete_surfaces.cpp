@@ -115,6 +115,7 @@ std::string formatNumber(double x) {
 
 DiscreteModel& Session::discreteModel() {
   if (discrete_) return *discrete_;
+  adoptSurfaceMeshFile();
   std::set<int> surfaces;
   for (int tag : factories_.tags(2))
     if (factories_.discrete().isDiscrete({2, tag})) surfaces.insert(tag);
@@ -228,8 +229,8 @@ void Session::classifySurfaces(double angle, bool includeBoundary, bool forRepar
   DiscreteModel& d = discreteModel();
   if (d.triangulation.triangles.empty())
     throw std::runtime_error(
-        "ClassifySurfaces: there are no merged triangles to classify (merge an STL, PLY or OFF "
-        "file of surfaces first)");
+        "ClassifySurfaces: there are no merged triangles to classify (merge a surface mesh "
+        "first: STL, PLY, OFF, MSH, Medit or VTK)");
   ClassifyOptions options;
   options.angle = angle;
   options.includeBoundary = includeBoundary;

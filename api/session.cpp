@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <utility>
 
 #include "api/discrete_model.h"
 #include "api/partitioning.h"
@@ -45,9 +46,11 @@ bool Session::addsToDiscreteSurfaces() const {
 // The surfaces of a file that holds surfaces only (no curve, no volume, no point element)
 // join the built-in factory as discrete surfaces, with the file's surface groups. Whether
 // they close is seen when a volume is meshed (checkDiscreteShells).
-bool Session::registerDiscreteSurfaces(const std::string& file) {
-  if (model_.surfaces().empty() || !model_.curves().empty() || !model_.volumes().empty() ||
-      !model_.points().empty())
+bool Session::registerDiscreteSurfaces(const std::string& file, bool dropLowerEntities) {
+  // Dropping: the file's curves, points and volumes without elements are left out.
+  const bool others =
+      !model_.curves().empty() || !model_.points().empty() || !model_.volumes().empty();
+  if (model_.surfaces().empty() || mesh_.elementCount(3) > 0 || (others && !dropLowerEntities))
     return false;
   for (const auto& [tag, surface] : model_.surfaces()) {
     BoundingBox box;
@@ -56,8 +59,9 @@ bool Session::registerDiscreteSurfaces(const std::string& file) {
     factories_.discrete().addDiscreteSurface(tag, box, file, {});
     discreteSurfaces_.insert(tag);
   }
+  // The groups of a file with curves name entities that classification replaces: left out.
   for (const auto& [id, group] : model_.physicalGroups()) {
-    if (id.dim != 2) continue;
+    if (id.dim != 2 || dropLowerEntities) continue;
     factories_.builtIn().addPhysicalGroup(2, id.tag, group.name, group.entities);
     ++discretePhysicals_;
   }
@@ -96,7 +100,23 @@ void Session::readMesh(const std::string& path) {
                              "' format is not supported (read: " + readExtensionList() + ")");
   readMeshFile(path, *format, model_, mesh_);
   meshFromFile_ = true;
-  registerDiscreteSurfaces(path);
+  meshIsMergedFile_ = registerDiscreteSurfaces(path);
+  if (meshIsMergedFile_) reportMergedEdges(path);
+  if (!meshIsMergedFile_ && !model_.surfaces().empty() && mesh_.elementCount(3) == 0 &&
+      discreteSurfaces_.empty())
+    surfaceMeshFile_ = path;
+}
+
+void Session::adoptSurfaceMeshFile() {
+  if (surfaceMeshFile_.empty() || !discreteSurfaces_.empty() || discrete_) return;
+  const std::string file = std::exchange(surfaceMeshFile_, std::string());
+  const std::size_t curves = model_.curves().size(), points = model_.points().size();
+  if (!registerDiscreteSurfaces(file, true)) return;
+  meshIsMergedFile_ = true;
+  log_.info("Merged '" + file + "': its " + std::to_string(model_.surfaces().size()) +
+            " surfaces are taken as merged triangles; its " + std::to_string(curves) +
+            " curves, " + std::to_string(points) + " points and physical groups are left out");
+  reportMergedEdges(file);
 }
 
 MeshOptions Session::meshOptions() const {
@@ -132,6 +152,8 @@ MeshOptions Session::meshOptions() const {
   m.optimizeThreshold = o.number("Mesh.OptimizeThreshold");
   m.anisoMax = o.number("Mesh.AnisoMax");
   m.smoothRatio = o.number("Mesh.SmoothRatio");
+  m.compoundSizeFactor = o.number("Mesh.CompoundMeshSizeFactor");
+  m.compoundClassify = clampedInteger<int>(o.number("Mesh.CompoundClassify"));
   m.views = &views_;
   return m;
 }
@@ -146,6 +168,7 @@ void Session::generate(int dim) {
   }
   MeshOptions options = meshOptions();
   if (discrete) options.discreteMesh = &discreteMesh_;
+  meshIsMergedFile_ = false;
   generateMesh(model_, options, dim, mesh_, log_);
   computeHomology(homologyRequests_, model_, mesh_, log_);
   const int partitions = clampedInteger<int>(options_.number("Mesh.NbPartitions"));
@@ -159,11 +182,13 @@ void Session::clearModel() {
   homologyRequests_.clear();
   origins_.clear();
   meshFromFile_ = false;
+  meshIsMergedFile_ = false;
   discreteMesh_ = Mesh();
   discreteSurfaces_.clear();
   discretePhysicals_ = 0;
   discrete_.reset();
   discreteFile_.clear();
+  surfaceMeshFile_.clear();
 }
 
 void Session::recordOrigin(EntityId entity, const SourceLocation& where) {

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "grammar/source.h"
@@ -25,6 +26,8 @@ namespace geomesh {
 
 struct DiscreteModel;     // api/discrete_model.h
 struct DiscreteTopology;  // mesh/discrete/classification.h
+struct FairingOptions;    // mesh/discrete/surface_fairing.h
+struct Triangulation;     // mesh/discrete/triangulation.h
 
 // Everything one run owns: options, the geometry factories, the model, the mesh, and where
 // messages and script output go. No global state: several sessions can coexist. Scripts run
@@ -101,6 +104,21 @@ class Session {
                         double curveAngle);
   void createTopology();
   void createGeometry();
+  // The merged triangles of the discrete surfaces (welded and consistently oriented, as
+  // ClassifySurfaces takes them); null when no surface file was merged or it has no triangle.
+  const Triangulation* mergedTriangulation();
+  // Plugin(Simplify) and Plugin(Fair) (api/merged_triangles.cpp): replace the merged triangles
+  // by fewer (each merged surface simplified apart, their common edges kept) or by smoother
+  // ones, before ClassifySurfaces; while the session's mesh is still the merged file's, it
+  // is replaced too (so that Save and the curvature plugins see the change). Throw
+  // std::runtime_error when there are no merged triangles or they were classified already.
+  // simplifyMergedTriangles collapses edges until at most `targetTriangles` are left or the next
+  // collapse would put a vertex farther than `maxDistance` from the planes of the triangles it
+  // replaces (0: no such bound); it returns the triangle counts before and after.
+  std::pair<std::size_t, std::size_t> simplifyMergedTriangles(std::size_t targetTriangles,
+                                                              double maxDistance);
+  // Returns how far a vertex moved at most.
+  double fairMergedTriangles(const FairingOptions& options);
   // Whether any geometry factory holds an entity.
   bool hasGeometry() const;
 
@@ -144,7 +162,20 @@ class Session {
   Mesh discreteMesh_;
   std::set<int> discreteSurfaces_;
   std::size_t discretePhysicals_ = 0;
-  bool registerDiscreteSurfaces(const std::string& file);
+  // dropLowerEntities: the file may hold curves and points too; they are left out.
+  bool registerDiscreteSurfaces(const std::string& file, bool dropLowerEntities = false);
+  // A merged mesh file of surfaces with curves or points (no volume) is kept as it was read,
+  // unless a statement on merged triangles (ClassifySurfaces, Plugin(Fair)...) asks for them:
+  // then its surfaces become discrete surfaces (adoptSurfaceMeshFile).
+  std::string surfaceMeshFile_;
+  void adoptSurfaceMeshFile();
+  // Whether mesh_ is still the mesh of the merged surface file, as read.
+  bool meshIsMergedFile_ = false;
+  // A merged file's open and non-manifold edges, told of once it is read.
+  void reportMergedEdges(const std::string& file) const;
+  // The merged triangles before classification, for Plugin(Simplify) and Plugin(Fair).
+  DiscreteModel& unclassifiedTriangles(const char* plugin);
+  void mergedTrianglesChanged(std::string statement);
   // The triangles of the discrete surfaces, gathered from discreteMesh_ on first use.
   std::unique_ptr<DiscreteModel> discrete_;
   std::string discreteFile_;

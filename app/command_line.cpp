@@ -150,7 +150,8 @@ Mesh:
   -rand VALUE            random perturbation factor (Mesh.RandomFactor)
   -part N                split the mesh into N partitions with METIS (Mesh.NbPartitions)
   -part_split            write each partition to its own file (name_1.msh, name_2.msh, ...)
-  -check                 check a mesh file (.msh) and report problems
+  -check                 check a mesh file (.msh) and report problems; for any input, the
+                         topology of each connected surface (genus, holes, defects)
   -keep_partial          when meshing fails, still write what was meshed
 Script:
   -setnumber NAME VALUE  set a numeric parameter (overrides DefineConstant/DefineNumber)

@@ -14,11 +14,13 @@
 #include "app/command_line.h"
 #include "app/console_log.h"
 #include "app/mesh_summary.h"
+#include "app/surface_check.h"
 #include "interpreter/diagnostics.h"
 #include "interpreter/run_script.h"
 #include "io/formats.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/core/mesh_error.h"
+#include "mesh/discrete/mesh_triangles.h"
 #include "mesh/high_order/set_order.h"
 #include "stdlib/clamped_integer.h"
 
@@ -142,10 +144,20 @@ bool isMeshFile(const std::string& path) {
   return findReaderByExtension(std::filesystem::path(path).extension().string()) != nullptr;
 }
 
-// -check: conformity and orientation, and curved elements whose Jacobian is not positive
-// everywhere. Returns the exit status.
-int checkMeshRead(const Session& session, const MeshSummary& summary, ConsoleLog& log) {
+// -check on surfaces: the topology of each connected part of the mesh's surface elements (of
+// the merged triangulation when the mesh has none), whatever their entities.
+void logSurfaceTopology(Session& session, ConsoleLog& log) {
+  Triangulation surface = meshTriangles(session.mesh()).triangulation;
+  if (surface.triangles.empty())
+    if (const Triangulation* merged = session.mergedTriangulation()) surface = *merged;
+  for (const std::string& line : surfaceTopologyLines(surface)) log.info(line);
+}
+
+// -check: conformity and orientation, curved elements whose Jacobian is not positive
+// everywhere, and the surfaces' topology. Returns the exit status.
+int checkMeshRead(Session& session, const MeshSummary& summary, ConsoleLog& log) {
   const MeshCheckReport report = checkMesh(session.model(), session.mesh());
+  logSurfaceTopology(session, log);
   if (!report.ok())
     log.error("Check: " + std::to_string(report.problems.size()) + " problem(s)\n" +
               report.summary());
@@ -199,9 +211,11 @@ int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
       log.info("The script meshed (Mesh n): only its Save statements write files");
     else
       log.info("Nothing meshed: give -1, -2 or -3 to mesh, -0 to check the geometry");
+    if (cl.check) logSurfaceTopology(session, log);
     return 0;
   }
   meshAndWrite(cl, session, log);
+  if (cl.check) logSurfaceTopology(session, log);
   return 0;
 }
 

@@ -1,11 +1,15 @@
 // Plugins in batch: their options are kept per plugin; Run executes the plugin on the
-// session's views (mesh/views/plugins.h) or, for SimplePartition, partitions the mesh.
+// session's views (mesh/views/plugins.h) or, for SimplePartition, partitions the mesh, and for
+// Simplify and Fair changes the merged triangulation.
 #include <array>
+#include <cmath>
+#include <cstdio>
 
 #include "api/partitioning.h"
 #include "api/session.h"
 #include "interpreter/script_interpreter.h"
 #include "mesh/sizes/named_formula.h"
+#include "mesh/discrete/surface_fairing.h"
 #include "stdlib/clamped_integer.h"
 
 namespace geomesh {
@@ -29,8 +33,11 @@ void Interpreter::executePlugin(const ast::PluginStmt& plugin, const SourceLocat
     return;
   }
   if (plugin.plugin == "SimplePartition") return partitionBySlices(where);
+  if (plugin.plugin == "Simplify") return simplifyMergedTriangles(where);
+  if (plugin.plugin == "Fair") return fairMergedTriangles(where);
   post::PluginContext context{session_.views(), session_.mesh(), session_.log(),
-                              compileNamedFormula};
+                              compileNamedFormula,
+                              [this] { return session_.mergedTriangulation(); }};
   post::PluginOutcome outcome;
   try {
     outcome = post::runPlugin(plugin.plugin, pluginOptions_[plugin.plugin], context);
@@ -64,6 +71,62 @@ void Interpreter::partitionBySlices(const SourceLocation& where) {
   try {
     api::partitionMeshBySlices(session_, slices);
   } catch (const std::exception& error) {
+    fail(where, error.what());
+  }
+}
+
+// Plugin(Simplify): TargetTriangles (a count, 0: none) and MaxError (a distance, 0: none),
+// at least one of them, on the merged triangles.
+void Interpreter::simplifyMergedTriangles(const SourceLocation& where) {
+  const post::PluginOptions& options = pluginOptions_["Simplify"];
+  const double target = options.number("TargetTriangles", 0);
+  const double maxError = options.number("MaxError", 0);
+  if (!(target >= 0) || target != std::floor(target))
+    fail(where, "Plugin(Simplify).TargetTriangles must be a whole number of triangles, 0 for none");
+  if (!(maxError >= 0) || !std::isfinite(maxError))
+    fail(where, "Plugin(Simplify).MaxError must be a distance, 0 for none");
+  if (target == 0 && maxError == 0)
+    fail(where,
+         "Plugin(Simplify) needs TargetTriangles (a triangle count) or MaxError (a distance)");
+  if (!session_.mergedTriangulation()) {
+    warn(where, "Plugin(Simplify): there are no merged triangles (merge an STL, PLY or OFF "
+                "file first); nothing done");
+    return;
+  }
+  try {
+    const auto [before, after] =
+        session_.simplifyMergedTriangles(clampedInteger<std::size_t>(target), maxError);
+    session_.log().info("Plugin(Simplify): " + std::to_string(before) + " -> " +
+                        std::to_string(after) + " triangles");
+  } catch (const std::runtime_error& error) {
+    fail(where, error.what());
+  }
+}
+
+// Plugin(Fair): Iterations (1) steps of mean-curvature flow of TimeStep (0.5, in squared mean
+// edge lengths) on the merged triangles.
+void Interpreter::fairMergedTriangles(const SourceLocation& where) {
+  const post::PluginOptions& options = pluginOptions_["Fair"];
+  FairingOptions fairing;
+  const double iterations = options.number("Iterations", 1);
+  fairing.step = options.number("TimeStep", fairing.step);
+  if (!(iterations >= 1) || iterations != std::floor(iterations) || iterations > 1e6)
+    fail(where, "Plugin(Fair).Iterations must be a whole number, at least 1");
+  if (!(fairing.step > 0) || !std::isfinite(fairing.step))
+    fail(where, "Plugin(Fair).TimeStep must be positive");
+  fairing.iterations = int(iterations);
+  if (!session_.mergedTriangulation()) {
+    warn(where, "Plugin(Fair): there are no merged triangles (merge an STL, PLY or OFF file "
+                "first); nothing done");
+    return;
+  }
+  try {
+    const double moved = session_.fairMergedTriangles(fairing);
+    char text[64];
+    std::snprintf(text, sizeof text, "%.6g", moved);
+    session_.log().info("Plugin(Fair): " + std::to_string(fairing.iterations) +
+                        " iteration(s); vertices moved by at most " + text);
+  } catch (const std::runtime_error& error) {
     fail(where, error.what());
   }
 }

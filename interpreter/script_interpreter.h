@@ -219,6 +219,8 @@ class Interpreter {
   // Plugin(name).option = value; and Plugin(name).Run; (plugins.cpp)
   void executePlugin(const ast::PluginStmt& plugin, const SourceLocation& where);
   void partitionBySlices(const SourceLocation& where);
+  void simplifyMergedTriangles(const SourceLocation& where);
+  void fairMergedTriangles(const SourceLocation& where);
   void executeSave(const ast::CommandStmt& command, const SourceLocation& where);
   void executePrint(const ast::CommandStmt& command, const SourceLocation& where);
   void executeMerge(const ast::CommandStmt& command, const SourceLocation& where);

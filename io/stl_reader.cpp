@@ -129,14 +129,24 @@ bool startsWithSolid(std::string_view data) {
 
 // Text when it starts with "solid" and has no NUL byte (the attribute counts of binary facets
 // almost always have some, and so may the header); binary otherwise, whose size must then be
-// exactly that of the facet count the header gives.
+// exactly that of the facet count the header gives (a shorter one with NUL bytes is told of as
+// a binary file cut short, by the byte and facet where its data stops).
 bool isBinary(std::string_view data, const std::string& name) {
   if (startsWithSolid(data) && data.find('\0') == std::string_view::npos) return false;
   if (data.size() < kHeaderBytes)
     throw MeshReadError(name + ":1: not an STL file: no 'solid' at the start, and " +
                         std::to_string(data.size()) + " bytes are too few for a binary one");
   const std::uint64_t n = facetCount(data);
-  if (data.size() - kHeaderBytes == n * kFacetBytes) return true;
+  const std::uint64_t expected = kHeaderBytes + n * kFacetBytes;
+  if (data.size() == expected) return true;
+  // Too short, with the NUL bytes of binary data: a binary file cut off.
+  if (data.size() < expected && data.find('\0') != std::string_view::npos) {
+    const std::size_t facet = (data.size() - kHeaderBytes) / kFacetBytes + 1;  // from 1
+    throw MeshReadError(name + ": binary STL truncated at byte " + std::to_string(data.size()) +
+                        " (facet " + std::to_string(facet) + " of " + std::to_string(n) +
+                        "): its header gives " + std::to_string(n) + " facets, which take " +
+                        std::to_string(expected) + " bytes");
+  }
   throw MeshReadError(name + ":1: not an ASCII STL file (no 'solid' at the start, or NUL " +
                       "bytes), nor a binary one: its header gives " + std::to_string(n) +
                       " facets, which take " + std::to_string(kHeaderBytes + n * kFacetBytes) +

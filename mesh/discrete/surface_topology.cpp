@@ -61,7 +61,7 @@ std::vector<std::uint32_t> boundaryLoopStarts(std::span<const Edge> edges,
   std::vector<std::uint32_t> nextAt(offset.begin(), offset.end() - 1), starts;
   auto unwalkedEdgeAt = [&](std::uint32_t v) -> std::int64_t {
     while (nextAt[v] < offset[v + 1] && walked[incident[nextAt[v]]]) ++nextAt[v];
-    return nextAt[v] < offset[v + 1] ? incident[nextAt[v]] : -1;
+    return nextAt[v] < offset[v + 1] ? std::int64_t{incident[nextAt[v]]} : std::int64_t{-1};
   };
   for (std::uint32_t first = 0; first < edges.size(); ++first) {
     if (walked[first]) continue;

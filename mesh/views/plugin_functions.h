@@ -25,6 +25,8 @@ void skin(const PluginOptions& options, PluginContext& context);
 void warp(const PluginOptions& options, PluginContext& context);
 void newView(const PluginOptions& options, PluginContext& context);
 void elementSize(const PluginOptions& options, PluginContext& context);
+void curvature(const PluginOptions& options, PluginContext& context);
+void vertexNormals(const PluginOptions& options, PluginContext& context);
 
 // Throws PluginError "Plugin(name): message".
 [[noreturn]] void fail(std::string_view plugin, const std::string& message);

@@ -44,6 +44,8 @@ constexpr std::array kPlugins = {
     PluginRow{"Warp", plugins::warp},
     PluginRow{"NewView", plugins::newView},
     PluginRow{"ElementSize", plugins::elementSize},
+    PluginRow{"Curvature", plugins::curvature},
+    PluginRow{"VertexNormals", plugins::vertexNormals},
     PluginRow{"Annotate", nullptr},
     PluginRow{"DiscretizationError", nullptr},
     PluginRow{"Remove", nullptr},

@@ -11,6 +11,7 @@
 
 #include "kernel/messages.h"
 #include "mesh/core/mesh.h"
+#include "mesh/discrete/triangulation.h"
 #include "mesh/views/view.h"
 
 namespace geomesh::post {
@@ -32,12 +33,15 @@ using CompiledFormula = std::function<double(std::span<const double> values)>;
 using FormulaCompiler =
     std::function<CompiledFormula(const std::string& text, const std::vector<std::string>& variables)>;
 
-// What a plugin works on: the session's views, its mesh (may be empty) and where messages go.
+// What a plugin works on: the session's views, its mesh (may be empty) and where messages go;
+// and, for the plugins on surfaces, the session's merged triangulation (STL, ...) when it has
+// no surface mesh: null (or an empty function) when there is none.
 struct PluginContext {
   ViewStore& views;
   const Mesh& mesh;
   MessageSink& log;
   FormulaCompiler compileFormula = {};
+  std::function<const Triangulation*()> mergedTriangles = {};
 };
 
 // A plugin's options are wrong (no such view, a bad expression...): the message says which.
@@ -49,7 +53,8 @@ enum class PluginOutcome { Ran, DisplayOnly, Unknown };
 
 // Runs plugin `name`: Ran when it did its work, DisplayOnly for plugins that only change
 // the display (Annotate, ...: nothing to do in batch), Unknown for names geomesh does not
-// know. Throws PluginError. SimplePartition is not here: it partitions the session's mesh.
+// know. Throws PluginError. SimplePartition, Simplify and Fair are not here: they change the
+// session's mesh or merged triangulation (interpreter/plugins.cpp).
 PluginOutcome runPlugin(const std::string& name, const PluginOptions& options,
                         PluginContext& context);
 

@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 
 #include "app/run.h"
+#include "command_fixture.h"
 #include "tests/scratch.h"
 
 namespace fs = std::filesystem;
@@ -19,29 +20,9 @@ namespace geomesh {
 namespace {
 
 // A scratch directory per test, removed afterwards.
-class Cli : public testing::Test {
+class Cli : public CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = scratch::path(
-        "cli-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-  int run(std::vector<std::string> args) {
-    out_.str("");
-    err_.str("");
-    return runGeomesh(args, out_, err_);
-  }
-
-  fs::path dir_;
-  std::ostringstream out_, err_;
+  Cli() : CommandTest("cli-") {}
 };
 
 const char* kSquare = R"(Point(1) = {0, 0, 0, 0.25};

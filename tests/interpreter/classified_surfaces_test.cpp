@@ -2,6 +2,7 @@
 // CreateTopology), then given geometry and meshed anew (CreateGeometry).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -80,6 +81,28 @@ TEST_F(ClassifiedSurfaces, ABoxSplitsIntoItsSixFaces) {
     const double length = distance(model.point(curve.startPoint)->xyz,
                                    model.point(curve.endPoint)->xyz);
     EXPECT_NEAR(length, std::round(length), 1e-9);
+  }
+}
+
+// A surface mesh saved with its curves and points (MSH, Medit, VTK): merged as it is, and its
+// surfaces taken as merged triangles once ClassifySurfaces asks for them.
+TEST_F(ClassifiedSurfaces, SurfaceMeshFilesWithCurvesAreClassifiedToo) {
+  for (const char* file : {"box.msh", "box.mesh", "box.vtk"}) {
+    writeStl("Box(1) = {0, 0, 0, 1, 2, 3};", file, 0.25);
+    ScriptRun kept;
+    runMain(kept, std::string("Merge \"") + file + "\";\n");
+    EXPECT_GT(count(kept.session.mesh(), ElementType::Line2), 0u) << file;  // as it was read
+    ScriptRun session;
+    remesh(session, file, "Mesh.MeshSizeMax = 0.3;\n");
+    const Mesh& mesh = session.session.mesh();
+    EXPECT_EQ(session.session.model().surfaces().size(), 6u) << file;
+    EXPECT_NEAR(measure(mesh, 3), 6, 1e-9) << file;
+    EXPECT_NEAR(measure(mesh, 2), 22, 1e-9) << file;
+    const std::string said = "its 6 surfaces are taken as merged triangles; its 12 curves, ";
+    const auto& infos = session.log.infos;
+    EXPECT_TRUE(std::any_of(infos.begin(), infos.end(), [&](const std::string& m) {
+      return m.find(said) != std::string::npos;
+    })) << file;
   }
 }
 

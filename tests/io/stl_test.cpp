@@ -297,10 +297,18 @@ TEST(Stl, ATruncatedBinaryFileIsAnError) {
   buildCubeSurface(model, mesh);
   const std::string bytes = writeAs("stl", model, mesh, true);
   const std::string error = readErrorOf("stl", bytes.substr(0, bytes.size() - 7), "t.stl");
-  EXPECT_NE(error.find("t.stl:1: "), std::string::npos) << error;
-  EXPECT_NE(error.find("12 facets, which take 684 bytes, but the file has 677"),
-            std::string::npos)
-      << error;
+  EXPECT_EQ(error,
+            "t.stl: binary STL truncated at byte 677 (facet 12 of 12): its header gives 12 "
+            "facets, which take 684 bytes");
+  // Cut at a facet's start: the data ran out where that facet should begin.
+  EXPECT_EQ(readErrorOf("stl", bytes.substr(0, 84 + 50 * 5), "t.stl").substr(0, 60),
+            "t.stl: binary STL truncated at byte 334 (facet 6 of 12): its");
+}
+
+TEST(Stl, AFileTooShortForItsCountWithoutBinaryDataIsNotCalledTruncated) {
+  const std::string text(120, 'x');  // no 'solid', no NUL byte: not a binary file cut short
+  const std::string error = readErrorOf("stl", text, "x.stl");
+  EXPECT_NE(error.find("x.stl:1: not an ASCII STL file"), std::string::npos) << error;
 }
 
 TEST(Stl, ATruncatedBinaryFileWhoseHeaderSaysSolidIsAnError) {
@@ -310,10 +318,9 @@ TEST(Stl, ATruncatedBinaryFileWhoseHeaderSaysSolidIsAnError) {
   std::string bytes = writeAs("stl", model, mesh, true);
   bytes.replace(0, 10, "solid cube");
   const std::string error = readErrorOf("stl", bytes.substr(0, 300), "t.stl");
-  EXPECT_NE(error.find("t.stl:1: "), std::string::npos) << error;
-  EXPECT_NE(error.find("12 facets, which take 684 bytes, but the file has 300"),
-            std::string::npos)
-      << error;
+  EXPECT_EQ(error,
+            "t.stl: binary STL truncated at byte 300 (facet 5 of 12): its header gives 12 "
+            "facets, which take 684 bytes");
 }
 
 TEST(Stl, ANonFiniteBinaryCoordinateIsAnError) {

@@ -409,5 +409,17 @@ TEST(SurfaceProcessingTopology, NonManifoldEdgeAndDegenerateTriangle) {
   EXPECT_EQ(report.vertices, 6u);
 }
 
+// A boundary chain that ends at a non-manifold edge's vertex, with no unwalked edge left
+// there: the walk stops (it once ran on with an edge index of -1 read as unsigned).
+TEST(SurfaceTopology, ABoundaryChainEndingAtANonManifoldEdgeIsOneOpenLoop) {
+  Triangulation t;
+  t.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, -1, 0}};
+  t.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 3}};  // edge 0-1 on all three
+  const SurfaceTopologyReport report = surfaceTopology(t);
+  EXPECT_EQ(report.nonManifoldEdges, 1u);
+  EXPECT_EQ(report.boundaryLoops, 1);
+  EXPECT_EQ(report.euler, 2);
+}
+
 }  // namespace
 }  // namespace geomesh
