@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <span>
 #include <sstream>
@@ -44,7 +45,49 @@ void addMeasures(const Mesh& mesh, MeshSummary& s) {
         case 3: s.volume += total; break;
         default: break;
       }
+      if (family(block.type) == ElementFamily::Hex) s.hexahedraVolume += total;
     }
+  }
+}
+
+// Interior and irregular vertices of the quadrangles (by their corners), when there are any:
+// the edges of all the surface elements together; a vertex counts when all its elements are
+// quadrangles and none of its edges belongs to one element only.
+void addQuadStructure(const Mesh& mesh, MeshSummary& s) {
+  bool quads = false;
+  for (const auto& [type, n] : s.elements) quads = quads || family(type) == ElementFamily::Quad;
+  if (!quads) return;
+  std::vector<std::uint64_t> edges;
+  std::vector<std::uint8_t> nearTriangle(mesh.nodeCount(), 0);
+  for (const auto& [id, em] : mesh.entities())
+    for (const ElementBlock& block : em.blocks) {
+      if (dimension(block.type) != 2) continue;
+      const auto corners = static_cast<std::size_t>(vertexCount(block.type));
+      for (std::size_t i = 0; i < block.size(); ++i) {
+        const auto nodes = block.element(i);
+        for (std::size_t k = 0; k < corners; ++k) {
+          if (corners != 4) nearTriangle[nodes[k]] = 1;
+          const NodeIndex a = std::min(nodes[k], nodes[(k + 1) % corners]);
+          const NodeIndex b = std::max(nodes[k], nodes[(k + 1) % corners]);
+          edges.push_back(std::uint64_t{a} << 32 | b);
+        }
+      }
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::uint32_t> valence(mesh.nodeCount(), 0);
+  std::vector<std::uint8_t> used(mesh.nodeCount(), 0), onBoundary(mesh.nodeCount(), 0);
+  for (std::size_t i = 0, j; i < edges.size(); i = j) {
+    for (j = i + 1; j < edges.size() && edges[j] == edges[i];) ++j;
+    for (const auto n : {NodeIndex(edges[i] >> 32), NodeIndex(edges[i] & 0xffffffffu)}) {
+      ++valence[n];
+      used[n] = 1;
+      if (j - i == 1) onBoundary[n] = 1;
+    }
+  }
+  for (std::size_t n = 0; n < valence.size(); ++n) {
+    if (!used[n] || onBoundary[n] || nearTriangle[n]) continue;
+    ++s.interiorVertices;
+    if (valence[n] != 4) ++s.irregularVertices;
   }
 }
 
@@ -137,6 +180,7 @@ MeshSummary summarizeMesh(const Model& model, const Mesh& mesh) {
   addCurvedValidity(mesh, s);
   addGroups(model, mesh, s);
   addLayers(model, mesh, s);
+  addQuadStructure(mesh, s);
   // Quality of the highest-dimensional elements present.
   for (int dim = 3; dim >= 2; --dim) {
     QualityStats q = meshQuality(mesh, dim, QualityMeasure::Gamma);
@@ -188,6 +232,24 @@ std::string formatLayerQuality(const MeshSummary& s) {
   os.precision(4);
   os << "boundary layer: " << plural(s.layerElements, "element") << ", scaled Jacobian min "
      << s.layerMinJacobian << ", mean " << s.layerMeanJacobian;
+  return os.str();
+}
+
+std::string formatQuadStructure(const MeshSummary& s) {
+  bool quads = false;
+  for (const auto& [type, n] : s.elements) quads = quads || family(type) == ElementFamily::Quad;
+  if (!quads) return {};
+  return "quadrangles: " + std::to_string(s.irregularVertices) + " of " +
+         std::to_string(s.interiorVertices) +
+         (s.interiorVertices == 1 ? " interior vertex" : " interior vertices") +
+         " irregular (not 4 edges)";
+}
+
+std::string formatHexShare(const MeshSummary& s) {
+  if (s.hexahedraVolume <= 0) return {};
+  std::ostringstream os;
+  os.precision(4);
+  os << "hexahedra: " << 100 * s.hexahedraVolume / s.volume << "% of the volume";
   return os.str();
 }
 

@@ -33,6 +33,12 @@ struct MeshSummary {
   std::size_t layerElements = 0;
   double layerMinJacobian = 0;
   double layerMeanJacobian = 0;
+  // Meshes with quadrangles: the vertices of quadrangles only that are off the boundary of
+  // the surface elements (edges of one element only), and those with other than four edges.
+  std::size_t interiorVertices = 0;
+  std::size_t irregularVertices = 0;
+  // Meshes with hexahedra: the volume of the hexahedra (their share of `volume`).
+  double hexahedraVolume = 0;
   struct Group {
     int dim = 0;
     int tag = 0;
@@ -48,6 +54,10 @@ std::string formatSummary(const MeshSummary& summary);
 std::string formatCurvedValidity(const MeshSummary& summary);
 // "boundary layer: 340 elements, scaled Jacobian min 0.81, mean 0.97"; empty without one.
 std::string formatLayerQuality(const MeshSummary& summary);
+// "quadrangles: 12 of 410 interior vertices irregular (not 4 edges)"; empty without quadrangles.
+std::string formatQuadStructure(const MeshSummary& summary);
+// "hexahedra: 72.5% of the volume"; empty without hexahedra.
+std::string formatHexShare(const MeshSummary& summary);
 // "4 points, 4 curves, 1 surface, 0 volumes, 2 physical groups"
 std::string describeModel(const Model& model);
 

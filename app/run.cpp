@@ -112,6 +112,8 @@ void logSummary(const MeshSummary& summary, ConsoleLog& log) {
   log.info(formatSummary(summary));
   if (summary.highOrder) log.info(formatCurvedValidity(summary));
   if (summary.layerElements > 0) log.info(formatLayerQuality(summary));
+  if (const std::string quads = formatQuadStructure(summary); !quads.empty()) log.info(quads);
+  if (const std::string hexes = formatHexShare(summary); !hexes.empty()) log.info(hexes);
 }
 
 void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {

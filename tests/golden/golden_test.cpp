@@ -66,6 +66,10 @@ bool figure(const MeshSummary& s, const std::string& key, double& value) {
     value = s.minScaledJacobian;
   } else if (key == "jacobian.invalid") {
     value = static_cast<double>(s.invalidElements);
+  } else if (key == "quads.irregular") {
+    value = static_cast<double>(s.irregularVertices);
+  } else if (key == "hexahedra.share") {
+    value = s.volume > 0 ? s.hexahedraVolume / s.volume : 0;
   } else if (key == "groups") {
     value = static_cast<double>(s.physicalGroups.size());
   } else if (key == "elements.total") {
