@@ -1,5 +1,5 @@
 // Turning the elements a mesh file lists into discrete model entities, for the readers of the
-// formats whose files name no entities of their own (VTK, STL, PLY, OFF).
+// formats whose files name no entities of their own (VTK, STL, PLY, OFF, OBJ).
 #pragma once
 
 #include <functional>

@@ -29,6 +29,9 @@ void readPly(std::istream& in, Model& model, Mesh& mesh, const std::string& name
 void writeOff(std::ostream& out, const Model& model, const Mesh& mesh,
               const MeshWriteOptions& options);
 void readOff(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
+void writeObj(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void readObj(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
 void writeUnv(std::ostream& out, const Model& model, const Mesh& mesh,
               const MeshWriteOptions& options);
 void readUnv(std::istream& in, Model& model, Mesh& mesh, const std::string& name);
@@ -72,6 +75,7 @@ constexpr MeshFormat kFormats[] = {
     {"stl", ".stl", 27, 0.0, writeStl, readStl, 1},
     {"ply", ".ply", 0, 0.0, writePly, readPly, 1},
     {"off", ".off", 0, 0.0, writeOff, readOff, 1},
+    {"obj", ".obj", 0, 0.0, writeObj, readObj, 1},
     {"unv", ".unv", 2, 0.0, writeUnv, readUnv, 2},
     {"mesh", ".mesh", 30, 0.0, writeMedit, readMedit, 2},
     {"bdf", ".bdf .nas", 31, 0.0, writeBdf, readBdf, 2},

@@ -14,39 +14,12 @@
 
 #include "io/binary_output.h"
 #include "io/formats.h"
-#include "io/physical_sets.h"
 #include "io/real_text.h"
 #include "io/surface_content.h"
 
 namespace geomesh {
 
 namespace {
-
-struct Solid {
-  std::string name;
-  std::vector<const ElementBlock*> blocks;
-};
-
-std::vector<Solid> solidsOf(const Model& model, const SurfaceContent& surface) {
-  std::vector<Solid> solids;
-  if (!surface.content.physicalOnly) {
-    for (const MshElementBlock& b : surface.blocks) {
-      const std::string name = "surface" + std::to_string(b.entity.tag);
-      if (solids.empty() || solids.back().name != name) solids.push_back({name, {}});
-      solids.back().blocks.push_back(b.block);
-    }
-    return solids;
-  }
-  for (const auto& [id, group] : model.physicalGroups()) {
-    if (id.dim != 2) continue;
-    Solid solid{physicalGroupName(group), {}};
-    for (const MshElementBlock& b : surface.blocks)
-      for (int tag : group.entities)
-        if (b.entity.tag == std::abs(tag)) solid.blocks.push_back(b.block);
-    if (!solid.blocks.empty()) solids.push_back(std::move(solid));
-  }
-  return solids;
-}
 
 using Triangle = std::array<Vec3, 3>;
 
@@ -72,9 +45,9 @@ void writeVector(std::ostream& out, const char* keyword, Vec3 v) {
   out << '\n';
 }
 
-void writeAscii(std::ostream& out, const Mesh& mesh, const std::vector<Solid>& solids) {
+void writeAscii(std::ostream& out, const Mesh& mesh, const std::vector<NamedSurfacePart>& solids) {
   if (solids.empty()) out << "solid geomesh\nendsolid geomesh\n";
-  for (const Solid& solid : solids) {
+  for (const NamedSurfacePart& solid : solids) {
     out << "solid " << solid.name << '\n';
     for (const ElementBlock* block : solid.blocks)
       forEachTriangle(mesh, *block, [&](const Triangle& t) {
@@ -87,9 +60,9 @@ void writeAscii(std::ostream& out, const Mesh& mesh, const std::vector<Solid>& s
   }
 }
 
-void writeBinary(std::ostream& out, const Mesh& mesh, const std::vector<Solid>& solids) {
+void writeBinary(std::ostream& out, const Mesh& mesh, const std::vector<NamedSurfacePart>& solids) {
   std::uint64_t triangles = 0;
-  for (const Solid& solid : solids)
+  for (const NamedSurfacePart& solid : solids)
     for (const ElementBlock* block : solid.blocks)
       triangles += block->size() * (block->type == ElementType::Quad4 ? 2 : 1);
   if (triangles > std::numeric_limits<std::uint32_t>::max())
@@ -101,7 +74,7 @@ void writeBinary(std::ostream& out, const Mesh& mesh, const std::vector<Solid>& 
   const auto add = [&](Vec3 v) {
     for (double c : {v.x, v.y, v.z}) appendRaw(bytes, static_cast<float>(c), std::endian::little);
   };
-  for (const Solid& solid : solids)
+  for (const NamedSurfacePart& solid : solids)
     for (const ElementBlock* block : solid.blocks)
       forEachTriangle(mesh, *block, [&](const Triangle& t) {
         add(normalOf(t));
@@ -121,7 +94,7 @@ void writeBinary(std::ostream& out, const Mesh& mesh, const std::vector<Solid>& 
 void writeStl(std::ostream& out, const Model& model, const Mesh& mesh,
               const MeshWriteOptions& options) {
   const SurfaceContent surface = selectSurfaceContent(model, mesh, options.saveAll, "stl");
-  const std::vector<Solid> solids = solidsOf(model, surface);
+  const std::vector<NamedSurfacePart> solids = namedSurfaceParts(model, surface);
   if (options.binary)
     writeBinary(out, mesh, solids);
   else

@@ -1,12 +1,14 @@
 // selectSurfaceContent: the triangles and quadrangles of surface-only formats, checked first;
-// their ASCII vertex and face lists.
+// their named parts and their ASCII vertex and face lists.
 #include "io/surface_content.h"
 
+#include <cstdlib>
 #include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 
+#include "io/physical_sets.h"
 #include "io/real_text.h"
 
 namespace geomesh {
@@ -65,6 +67,28 @@ SurfaceContent selectSurfaceContent(const Model& model, const Mesh& mesh, bool s
         surface.nodes.push_back(n);
       }
   return surface;
+}
+
+std::vector<NamedSurfacePart> namedSurfaceParts(const Model& model,
+                                                const SurfaceContent& surface) {
+  std::vector<NamedSurfacePart> parts;
+  if (!surface.content.physicalOnly) {
+    for (const MshElementBlock& b : surface.blocks) {
+      const std::string name = "surface" + std::to_string(b.entity.tag);
+      if (parts.empty() || parts.back().name != name) parts.push_back({name, {}});
+      parts.back().blocks.push_back(b.block);
+    }
+    return parts;
+  }
+  for (const auto& [id, group] : model.physicalGroups()) {
+    if (id.dim != 2) continue;
+    NamedSurfacePart part{physicalGroupName(group), {}};
+    for (const MshElementBlock& b : surface.blocks)
+      for (int tag : group.entities)
+        if (b.entity.tag == std::abs(tag)) part.blocks.push_back(b.block);
+    if (!part.blocks.empty()) parts.push_back(std::move(part));
+  }
+  return parts;
 }
 
 void writeAsciiVerticesAndFaces(std::ostream& out, const Mesh& mesh,

@@ -1,9 +1,10 @@
-// What the formats of surface meshes (STL, PLY, OFF) save: the linear triangles and
+// What the formats of surface meshes (STL, PLY, OFF, OBJ) save: the linear triangles and
 // quadrangles of what an MSH file would save, and the nodes they use.
 #pragma once
 
 #include <cstdint>
 #include <iosfwd>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +26,17 @@ struct SurfaceContent {
 // and no surface element").
 SurfaceContent selectSurfaceContent(const Model& model, const Mesh& mesh, bool saveAll,
                                     std::string_view format);
+
+// The faces in named parts, as STL solids and OBJ objects hold them: with only physical groups
+// saved, one part per physical surface, named by physicalGroupName (the group's name, else
+// "PhysicalSurface3") and holding the blocks of the group's entities; otherwise one part per
+// surface entity ("surface3").
+struct NamedSurfacePart {
+  std::string name;
+  std::vector<const ElementBlock*> blocks;
+};
+std::vector<NamedSurfacePart> namedSurfaceParts(const Model& model,
+                                                const SurfaceContent& surface);
 
 // The vertex lines ("x y z") then the face lines ("3 i j k", indices into `nodes`), as the
 // ASCII forms of PLY and OFF both lay them out.

@@ -21,7 +21,7 @@ ctest --test-dir "$build" --output-on-failure -j2 --timeout 900
 runs=${GEOMESH_FUZZ_RUNS:-20000}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/scripts" "$work/msh" "$work/run"
+mkdir -p "$work/scripts" "$work/msh" "$work/obj" "$work/run"
 cp "$root"/tests/golden/scripts/*.geo "$root"/tutorials/*.geo "$work/scripts/"
 # Seed meshes for the reader, in every layout it reads: 4.1 and 2.2, ASCII and binary, whole
 # and partitioned.
@@ -35,9 +35,16 @@ for format in msh41 msh22; do
       -clscale 4 -part 3 -o "$work/msh/parts-$format$bin.msh"
   done
 done
+# Seed surface meshes for the OBJ reader: a square and a plate with a hole.
+"$build/bin/geomesh" "$root/tests/golden/scripts/square.geo" -2 -v 0 -clscale 4 \
+  -o "$work/obj/square.obj"
+"$build/bin/geomesh" "$root/tutorials/t1.geo" -2 -v 0 -o "$work/obj/plate.obj"
 cd "$work/run"  # scripts may write files (Printf > "file"): keep them here
 "$build/bin/fuzz_script" -seed=1 -runs="$runs" -timeout=10 -rss_limit_mb=4096 \
   -max_len=4096 "$work/scripts"
 "$build/bin/fuzz_msh_reader" -seed=1 -runs=$((runs * 10)) -timeout=10 -rss_limit_mb=4096 \
   -max_len=16384 "$work/msh"
-echo "fuzzing: $runs runs of the script front end, $((runs * 10)) of the MSH reader, no crash"
+"$build/bin/fuzz_obj_reader" -seed=1 -runs=$((runs * 5)) -timeout=10 -rss_limit_mb=4096 \
+  -max_len=8192 "$work/obj"
+echo "fuzzing: $runs runs of the script front end, $((runs * 10)) of the MSH reader," \
+  "$((runs * 5)) of the OBJ reader, no crash"

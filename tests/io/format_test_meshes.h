@@ -1,4 +1,4 @@
-// Small meshes and helpers for the tests of the VTK, VTU, STL, PLY and OFF formats: writing
+// Small meshes and helpers for the tests of the VTK, VTU, STL, PLY, OFF and OBJ formats: writing
 // and reading through a row of the format table, counting elements per type.
 #pragma once
 
