@@ -277,6 +277,8 @@ DiscreteSurfaceGeometry::Located DiscreteSurfaceGeometry::locate(Vec2 uv) const 
 }
 
 Vec3 DiscreteSurfaceGeometry::point(Vec2 uv) const {
+  // A plane patch is its plane: no triangle to find.
+  if (hasPlaneFrame()) return map_.origin + uv.u * map_.axisU + uv.v * map_.axisV;
   const Located at = locate(uv);
   const TriangleVertices& t = map_.triangles[at.triangle];
   const std::array<double, 3>& b = at.barycentric;
@@ -284,6 +286,7 @@ Vec3 DiscreteSurfaceGeometry::point(Vec2 uv) const {
 }
 
 SurfaceDerivatives DiscreteSurfaceGeometry::firstDerivatives(Vec2 uv) const {
+  if (hasPlaneFrame()) return {map_.axisU, map_.axisV};
   return search_->maps[locate(uv).triangle].jacobian;
 }
 

@@ -23,9 +23,11 @@ struct CurveTrace {
 
 // The surface of a mapped patch, piecewise linear over its uv triangles.
 //
-// point(uv) finds the uv triangle holding uv (the closest one when uv lies outside every
-// triangle, e.g. inside a filled hole or just past the boundary) and maps uv by that
-// triangle's affine map to space; firstDerivatives(uv) is that map's constant Jacobian.
+// On a plane patch with its frame (PatchMap::origin, axisU, axisV), point(uv) and
+// firstDerivatives(uv) are those of the plane. Otherwise point(uv) finds the uv triangle
+// holding uv (the closest one when uv lies outside every triangle, e.g. inside a filled hole
+// or just past the boundary) and maps uv by that triangle's affine map to space;
+// firstDerivatives(uv) is that map's constant Jacobian.
 // project(p) finds the closest point on the 3D triangles and returns its uv by barycentric
 // interpolation. curveParameters(signedCurve, t) interpolates the CurveTrace of |signedCurve|
 // linearly (the sign is ignored), clamped to its ends. curvature(uv) interpolates
@@ -61,6 +63,7 @@ class DiscreteSurfaceGeometry final : public SurfaceGeometry {
   struct Search;  // the spatial indices (uv grid, CGAL trees)
 
   Located locate(Vec2 uv) const;
+  bool hasPlaneFrame() const { return map_.planar && dot(map_.axisU, map_.axisU) > 0; }
 
   std::vector<Vec3> points_;
   PatchMap map_;

@@ -107,8 +107,13 @@ std::size_t foldedCount(std::span<const TriangleVertices> triangles, std::span<c
 }
 
 // The orthogonal projection onto the least-squares plane, its normal turned along the
-// triangles' normals; nullopt when a vertex is off that plane.
-std::optional<std::vector<Vec2>> planeProjection(const LocalPatch& patch) {
+// triangles' normals, and the plane's frame; nullopt when a vertex is off that plane.
+struct PlaneProjection {
+  std::vector<Vec2> uv;
+  Vec3 origin, axisU, axisV;
+};
+
+std::optional<PlaneProjection> planeProjection(const LocalPatch& patch) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (Vec3 p : patch.points) centroid += Eigen::Vector3d(p.x, p.y, p.z);
   centroid /= static_cast<double>(patch.points.size());
@@ -131,10 +136,10 @@ std::optional<std::vector<Vec2>> planeProjection(const LocalPatch& patch) {
                         patch.points[v[2]] - patch.points[v[0]]);
   if (dot(areaVector, normal) < 0) normal = -normal;
   const Vec3 e2 = cross(normal, e1);
-  std::vector<Vec2> uv;
-  uv.reserve(patch.points.size());
-  for (Vec3 p : patch.points) uv.push_back({dot(p - c, e1), dot(p - c, e2)});
-  return uv;
+  PlaneProjection projection{{}, c, e1, e2};
+  projection.uv.reserve(patch.points.size());
+  for (Vec3 p : patch.points) projection.uv.push_back({dot(p - c, e1), dot(p - c, e2)});
+  return projection;
 }
 
 // The patch closed into a disk: its points and triangles followed by one virtual vertex per
@@ -297,9 +302,14 @@ ParametrizationResult parametrizePatch(const Triangulation& t,
   LocalPatch& patch = std::get<LocalPatch>(local);
   if (std::string why = topologyFailure(patch); !why.empty()) return failed(std::move(why));
 
-  if (std::optional<std::vector<Vec2>> projection = planeProjection(patch))
-    if (foldedCount(patch.triangles, *projection) == 0)
-      return mapped(std::move(patch), std::move(*projection), true);
+  if (std::optional<PlaneProjection> projection = planeProjection(patch))
+    if (foldedCount(patch.triangles, projection->uv) == 0) {
+      ParametrizationResult result = mapped(std::move(patch), std::move(projection->uv), true);
+      result.map->origin = projection->origin;
+      result.map->axisU = projection->axisU;
+      result.map->axisV = projection->axisV;
+      return result;
+    }
 
   std::optional<std::vector<Vec2>> uv = convexCombinationMap(patch);
   if (!uv) return failed("its linear system could not be solved");

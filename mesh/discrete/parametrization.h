@@ -20,6 +20,9 @@ struct PatchMap {
   std::vector<TriangleVertices> triangles;
   std::vector<Vec2> uv;  // per local vertex
   bool planar = false;  // the patch is plane and uv is its orthogonal projection onto its plane
+  // When planar: the plane's point of uv (0, 0) and its unit axes, uv = ((p - origin).axisU,
+  // (p - origin).axisV).
+  Vec3 origin{}, axisU{}, axisV{};
 };
 
 struct ParametrizationResult {
