@@ -14,14 +14,13 @@
 #include "app/command_line.h"
 #include "app/console_log.h"
 #include "app/mesh_summary.h"
+#include "app/script_run.h"
 #include "app/surface_check.h"
 #include "interpreter/diagnostics.h"
-#include "interpreter/run_script.h"
 #include "io/formats.h"
 #include "mesh/checks/mesh_check.h"
 #include "mesh/core/mesh_error.h"
 #include "mesh/discrete/mesh_triangles.h"
-#include "mesh/high_order/set_order.h"
 #include "stdlib/clamped_integer.h"
 
 namespace geomesh {
@@ -41,13 +40,6 @@ class Stopwatch {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-std::string formatSeconds(double s) {
-  std::ostringstream os;
-  os.precision(3);
-  os << s << " s";
-  return os.str();
-}
-
 // Every option with its default and help, one per line, as a script would set it.
 void listOptions(std::ostream& out) {
   OptionRegistry options;
@@ -64,21 +56,6 @@ std::string outputPath(const CommandLine& cl) {
   std::filesystem::path p(cl.files.front());
   p.replace_extension(".msh");
   return p.string();
-}
-
-// Evaluates the script; returns false if the script asked to stop (Exit).
-bool evaluateScript(const CommandLine& cl, Session& session, ConsoleLog& log) {
-  Stopwatch watch;
-  const std::string& file = cl.files.front();
-  log.info("Reading '" + file + "'...");
-  try {
-    runScriptFile(session, file);
-  } catch (const ScriptExit&) {
-    log.info("Script called Exit: stopping");
-    return false;
-  }
-  log.info("Done reading '" + file + "' (" + formatSeconds(watch.seconds()) + ")");
-  return true;
 }
 
 // -0: the evaluated geometry as a flat script, <script>.geo_unrolled unless -o says otherwise.
@@ -125,12 +102,7 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   }
   const std::string path = outputPath(cl);
   const MeshFormat& format = api::outputFormat(session.options(), path, cl.format);
-  const int order = session.meshOptions().elementOrder;
-  if (const std::string why = unsupportedOrderReason(order); !why.empty())
-    throw std::invalid_argument("Mesh.ElementOrder: " + why);
-  if (const std::string why = orderUnsupportedReason(format, order); !why.empty())
-    throw std::invalid_argument("cannot write elements of order " + std::to_string(order) +
-                                " to '" + path + "': " + why);
+  checkElementOrder(session, &format, path);
   api::requireSomethingToMesh(session, *cl.dimension);
   Stopwatch watch;
   generate(cl, session, format, path, log);
@@ -200,12 +172,8 @@ int runMeshFile(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
 int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   if (isMeshFile(cl.files.front())) return runMeshFile(cl, out, log);
   Session session(log, out);
-  session.options().setNumber("General.Verbosity", cl.verbosity);
-  session.allowSystemCalls(cl.allowSystemCalls);
-  for (const auto& [name, value] : cl.setNumbers) api::setNumber(session, name, value);
-  for (const auto& [name, value] : cl.setStrings) api::setString(session, name, value);
-  applyOptions(cl, session.options());
-  if (!evaluateScript(cl, session, log)) return 0;
+  applySettings(cl, session);
+  if (!evaluateScriptFile(cl.files.front(), session, log)) return 0;
   if (!cl.dimension) {
     session.synchronize();
     log.info("Geometry: " + describeModel(session.model()));

@@ -17,6 +17,7 @@ packages=(
   libocct-visualization-dev libocct-data-exchange-dev
   libgtest-dev
   clang libclang-rt-14-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 
 missing_packages() {
