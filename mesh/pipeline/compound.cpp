@@ -126,6 +126,33 @@ std::string referenceProblem(const Entities& e, int dim, const std::vector<int>&
   return why;
 }
 
+// The entities the BoundaryLayer fields in use name: walls, points, fans, surfaces left out.
+// A compound must keep them (a layer along a curve the compound removed would be lost).
+std::set<EntityId> boundaryLayerEntities(const Model& model) {
+  static constexpr std::pair<const char*, int> kLists[] = {
+      {"CurvesList", 1},      {"EdgesList", 1},           {"PointsList", 0},
+      {"NodesList", 0},       {"VerticesList", 0},        {"FanPointsList", 0},
+      {"FanNodesList", 0},    {"ExcludedSurfacesList", 2}, {"ExcludedFaceList", 2}};
+  std::set<EntityId> named;
+  const MeshConstraints& c = model.meshConstraints();
+  for (int field : c.boundaryLayerFields) {
+    const auto it = c.sizeFields.find(field);
+    if (it == c.sizeFields.end()) continue;
+    for (const auto& [list, dim] : kLists)
+      if (const auto values = it->second.numbers.find(list); values != it->second.numbers.end())
+        for (double tag : values->second) named.insert({dim, static_cast<int>(tag)});
+  }
+  return named;
+}
+
+// Why the BoundaryLayer fields keep `id` from being left out; empty when they do not.
+std::string layerProblem(const std::set<EntityId>& layered, EntityId id) {
+  if (!layered.contains(id)) return {};
+  static constexpr const char* kKinds[] = {"point", "curve", "surface"};
+  return std::string(kKinds[id.dim]) + " " + std::to_string(id.tag) +
+         " is named by a BoundaryLayer field";
+}
+
 // ---- Compound surfaces --------------------------------------------------------------------
 
 // How the curves of a compound surface's surfaces are used: boundary curves once, the inner
@@ -138,7 +165,8 @@ struct SurfaceGroup {
   std::vector<int> inner;            // curves used twice
 };
 
-std::string surfaceGroupProblem(const Model& model, SurfaceGroup& g) {
+std::string surfaceGroupProblem(const Model& model, SurfaceGroup& g,
+                                const std::set<EntityId>& layered) {
   const MeshConstraints& c = model.meshConstraints();
   for (std::size_t k = 0; k < g.parts.size(); ++k) {
     const int tag = g.parts[k];
@@ -170,6 +198,18 @@ std::string surfaceGroupProblem(const Model& model, SurfaceGroup& g) {
                std::to_string(above);
   }
   if (g.inner.size() == g.uses.size()) return "they have no boundary curve";
+  for (int tag : g.parts)
+    if (std::string why = layerProblem(layered, {2, tag}); !why.empty()) return why;
+  std::set<int> kept;  // the points the boundary curves end at
+  for (const auto& [curve, count] : g.uses)
+    if (count == 1) kept.insert({model.curve(curve)->startPoint, model.curve(curve)->endPoint});
+  for (int curve : g.inner) {
+    if (std::string why = layerProblem(layered, {1, curve}); !why.empty()) return why;
+    for (int point : {model.curve(curve)->startPoint, model.curve(curve)->endPoint})
+      if (std::string why = kept.contains(point) ? "" : layerProblem(layered, {0, point});
+          !why.empty())
+        return why;
+  }
   for (const auto& [tag, v] : model.volumes()) {
     std::size_t shellsWith = 0, found = 0;
     for (const auto& shell : v.shells) {
@@ -483,10 +523,17 @@ std::string replaceEmbedded(std::vector<int>& tags, const std::vector<int>& grou
 
 // Puts a compound curve in place of its curves; the reason it cannot be (nothing changed then).
 std::string applyCurveGroup(const std::vector<int>& group, CompoundMeshing::Curve& out,
-                            Entities& e) {
+                            const std::set<EntityId>& layered, Entities& e) {
   int first = 0, last = 0;
   std::string why = chainCurves(e, group, out.parts, first, last);
   if (why.empty()) why = referenceProblem(e, 1, group);
+  for (std::size_t k = 0; k < out.parts.size() && why.empty(); ++k) {
+    const ModelCurve& c = e.curves.at(out.parts[k].tag);
+    why = layerProblem(layered, {1, c.tag});
+    // The points between two curves of the chain are left out.
+    const int inner = out.parts[k].reversed ? c.startPoint : c.endPoint;
+    if (why.empty() && k + 1 < out.parts.size()) why = layerProblem(layered, {0, inner});
+  }
   if (!why.empty()) return why;
   Entities edited = e;
   for (auto& [tag, s] : edited.surfaces) {
@@ -655,11 +702,12 @@ std::optional<CompoundMeshing> planCompounds(const Model& model, const MeshOptio
   };
   CompoundMeshing plan;
   Entities e = entitiesOf(model);
+  const std::set<EntityId> layered = boundaryLayerEntities(model);
   // Surfaces: their meshes on their own, finer, then one map each.
   std::vector<SurfaceGroup> groups;
   for (const std::vector<int>& parts : surfaceGroups) {
     SurfaceGroup g{parts, {}, {}, {}, {}};
-    std::string why = surfaceGroupProblem(model, g);
+    std::string why = surfaceGroupProblem(model, g, layered);
     if (why.empty()) why = referenceProblem(e, 2, parts);
     bool overlaps = false;
     for (const SurfaceGroup& other : groups)
@@ -709,7 +757,7 @@ std::optional<CompoundMeshing> planCompounds(const Model& model, const MeshOptio
   for (const std::vector<int>& group : curveGroups) {
     CompoundMeshing::Curve out;
     out.tag = nextCurve;
-    if (const std::string why = applyCurveGroup(group, out, e); !why.empty()) {
+    if (const std::string why = applyCurveGroup(group, out, layered, e); !why.empty()) {
       skip(1, group, why);
       continue;
     }

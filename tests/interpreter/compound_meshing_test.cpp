@@ -32,6 +32,13 @@ double minGamma(const Mesh& mesh) {
   return worst;
 }
 
+// Whether a surface's mesh has a boundary layer part.
+bool hasLayer(const Mesh& mesh) {
+  for (const auto& [id, em] : mesh.entities())
+    if (id.dim == 2 && em.layer && em.layer->triangles + em.layer->quadrangles > 0) return true;
+  return false;
+}
+
 // A line from x = 0 to 1 split at x = 0.57, its second half drawn backwards.
 constexpr const char* kSplitLine =
     "lc = 0.1;\nPoint(1) = {0, 0, 0, lc}; Point(2) = {0.57, 0, 0, lc}; Point(3) = {1, 0, 0, lc};\n"
@@ -181,6 +188,31 @@ TEST(CompoundMeshing, ACurveBetweenThemThatBoundsAnotherSurfaceKeepsThemApart) {
                                  "surface 3; its surfaces are meshed one by one");
   ASSERT_NE(run.session.mesh().find({1, 7}), nullptr);
   EXPECT_TRUE(checkMesh(run.session.model(), run.session.mesh()).ok());
+}
+
+TEST(CompoundMeshing, EntitiesThatOthersNameByTagStayApart) {
+  // A boundary layer along curve 1, a periodic copy of curve 2: neither compound is made, and
+  // the layer is still built.
+  ScriptRun layered;
+  layered.run(std::string(kSplitLine) +
+              "Point(4) = {1, 1, 0, lc}; Point(5) = {0, 1, 0, lc};\n"
+              "Line(3) = {3, 4}; Line(4) = {4, 5}; Line(5) = {5, 1};\n"
+              "Curve Loop(1) = {1, -2, 3, 4, 5}; Plane Surface(1) = {1};\n"
+              "Compound Curve{1, 2};\nField[1] = BoundaryLayer;\nField[1].CurvesList = {1};\n"
+              "Field[1].Size = 0.01;\nField[1].Thickness = 0.03;\nBoundaryLayer Field = 1;\n");
+  api::generate(layered.session, 2);
+  ASSERT_EQ(layered.log.warnings.size(), 1u);
+  EXPECT_EQ(layered.log.warnings[0], "Compound Curve{1, 2}: curve 1 is named by a BoundaryLayer "
+                                     "field; its curves are meshed one by one");
+  EXPECT_TRUE(hasLayer(layered.session.mesh()));
+  ScriptRun periodic;
+  periodic.run(std::string(kSplitLine) + "Point(4) = {1, 1, 0, lc}; Point(5) = {0.57, 1, 0, lc};\n"
+               "Line(3) = {4, 5};\nPeriodic Curve{3} = {2} Translate{0, 1, 0};\n"
+               "Compound Curve{1, 2};\n");
+  api::generate(periodic.session, 1);
+  ASSERT_EQ(periodic.log.warnings.size(), 1u);
+  EXPECT_NE(periodic.log.warnings[0].find("curve 3 is a periodic copy of 2"), std::string::npos)
+      << periodic.log.warnings[0];
 }
 
 TEST(CompoundMeshing, ABoxWithASplitFaceFillsItsVolume) {
