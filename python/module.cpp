@@ -1,5 +1,5 @@
 // The compiled part of `import geomesh`: run a .geo script as the geomesh command does and
-// read the mesh it made as NumPy arrays.
+// read the mesh it made as NumPy arrays; the model-building API is in python/model_api.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -20,6 +20,7 @@
 #include "api/output.h"
 #include "app/mesh_summary.h"
 #include "app/script_run.h"
+#include "python/bindings.h"
 #include "grammar/diagnostic.h"
 #include "mesh/core/mesh_error.h"
 #include "stdlib/build_info.h"
@@ -28,20 +29,6 @@ namespace py = pybind11;
 
 namespace geomesh::python {
 namespace {
-
-// A finished run. The session (model and mesh) lives as long as the Python object, and every
-// array that views its memory keeps that object alive. Nothing changes the mesh after the
-// run, so the views stay valid.
-class MeshResult {
- public:
-  explicit MeshResult(std::unique_ptr<ScriptRun> run) : run_(std::move(run)) {}
-  Session& session() { return run_->session(); }
-  const Session& session() const { return run_->session(); }
-  const Mesh& mesh() const { return session().mesh(); }
-
- private:
-  std::unique_ptr<ScriptRun> run_;
-};
 
 // The module's exception types, kept by the functions that raise them.
 struct ErrorTypes {
@@ -108,7 +95,10 @@ std::unique_ptr<MeshResult> runScript(const ErrorTypes& errors, CommandLine sett
   } catch (const MeshError& e) {
     raise(errors.mesh, e.what(), nullptr);
   }
-  return std::make_unique<MeshResult>(std::move(run));
+  // Nothing changes a finished run's mesh: the views of its arrays stay valid.
+  std::shared_ptr<ScriptRun> owner = std::move(run);
+  Session& session = owner->session();
+  return std::make_unique<MeshResult>(std::move(owner), session);
 }
 
 void makeReadOnly(py::array& array) { array.attr("setflags")(py::arg("write") = false); }
@@ -247,7 +237,8 @@ void defineMesh(py::module_& m) {
 
 PYBIND11_MODULE(_geomesh, m) {
   using namespace geomesh::python;
-  m.doc() = "geomesh: Gmsh-compatible .geo scripts meshed, meshes read as NumPy arrays.";
+  m.doc() = "geomesh: Gmsh-compatible .geo scripts meshed, models built from Python, meshes "
+            "read as NumPy arrays.";
   m.attr("__version__") = GEOMESH_VERSION;
   py::object base = newErrorType(m, "Error", "Base of geomesh's errors.", PyExc_Exception);
   ErrorTypes errors;
@@ -267,4 +258,5 @@ PYBIND11_MODULE(_geomesh, m) {
       "Runs a .geo script as `geomesh path -<dim> [-setnumber k v]... [-setstring k v]... "
       "[-o output] [-v verbosity]` does and returns its Mesh. dim 0 evaluates the geometry "
       "only.");
+  defineModelApi(m);
 }
