@@ -76,6 +76,11 @@ py::list dimTagList(const std::vector<EntityId>& ids) {
   return list;
 }
 
+void warnUnsupported(const State& state, const std::string& call, const std::string& why) {
+  LiveSession& s = state->live();
+  if (s.firstWarning(call)) s.log.warning(call + ": " + why);
+}
+
 void synchronize(Session& session) {
   try {
     session.synchronize();
@@ -206,10 +211,9 @@ void defineMeshing(py::module_& mesh, const State& state) {
   mesh.def(
       "setSize",
       [state](const DimTags& dimTags, double size) {
-        std::vector<int> points;
+        LiveSession& s = state->live();
         for (const auto& [dim, tag] : dimTags)
-          if (dim == 0) points.push_back(tag);
-        state->live().occ->setMeshSize(points, size);
+          if (dim == 0) s.factoryOf({0, tag}).setMeshSize({tag}, size);
       },
       py::arg("dimTags"), py::arg("size"), "The mesh size at the points among dimTags.");
   mesh.def(
@@ -312,8 +316,24 @@ void mergeFile(Session& session, const std::filesystem::path& path) {
 
 void defineTopLevel(py::module_& m, const State& state) {
   m.def(
-      "initialize", [state] { state->live(); },
-      "Starts the session the API acts on (every call starts it when needed).");
+      "initialize",
+      [state](const std::vector<std::string>& argv, bool, bool run, bool) {
+        LiveSession& s = state->live();
+        // Command-line words: -v n sets the verbosity; the others (such as -nopopup) are
+        // accepted and left alone.
+        for (std::size_t i = 1; i + 1 < argv.size(); ++i)
+          if (argv[i] == "-v") {
+            const double verbosity = std::atof(argv[i + 1].c_str());
+            s.session.options().setNumber("General.Verbosity", verbosity);
+            s.log.setVerbosity(static_cast<int>(verbosity));
+          }
+        if (run)
+          warnUnsupported(state, "initialize(run=True)", "files on the command line are not run");
+      },
+      py::arg("argv") = std::vector<std::string>{}, py::arg("readConfigFiles") = true,
+      py::arg("run") = false, py::arg("interruptible") = true,
+      "Starts the session the API acts on (every call starts it when needed). argv: command "
+      "line words, of which -v n is read.");
   m.def(
       "isInitialized", [state] { return state->initialized(); },
       "Whether a session is started.");
@@ -373,12 +393,22 @@ void defineModelApi(py::module_& m) {
   defineModel(model, state);
   py::module_ geo = model.def_submodule("geo", "Geometry of the built-in kernel.");
   defineGeo(geo, state);
+  defineGeoOperations(geo, state);
   py::module_ occ = model.def_submodule("occ", "Geometry of the OpenCASCADE kernel.");
   defineOcc(occ, state);
+  defineOccOperations(occ, state);
   py::module_ mesh = model.def_submodule("mesh", "Meshing the model and reading its mesh.");
   defineMeshing(mesh, state);
+  defineMeshConstraints(mesh, state);
+  defineModelQueries(model, state);
+  // Calls both namespaces have: the same function under either name.
+  geo.attr("addPhysicalGroup") = model.attr("addPhysicalGroup");
+  py::module_ geoMesh = geo.attr("mesh");
+  for (const char* name : {"setTransfiniteCurve", "setTransfiniteSurface", "setRecombine"})
+    mesh.attr(name) = geoMesh.attr(name);
   py::module_ option = m.def_submodule("option", "The options of the session.");
   defineOptions(option, state);
+  defineFrontEnds(m, option, state);
 }
 
 }  // namespace geomesh::python

@@ -74,20 +74,6 @@ void defineBooleans(py::module_& occ, const State& state) {
 
 }  // namespace
 
-// A binding of a built-in call on a list of tags: the next free tag of `kind` when the tag is
-// -1, then add(session, tag, tags); returns the tag.
-using Tags = std::vector<int>;
-
-template <typename Add>
-auto tagged(const State& state, int kind, Add add) {
-  return [state, kind, add](const Tags& tags, int tag) {
-    LiveSession& s = state->live();
-    if (tag < 0) tag = s.nextTag(kind);
-    add(s, tag, tags);
-    return tag;
-  };
-}
-
 void defineGeo(py::module_& geo, const State& state) {
   geo.def(
       "addPoint",
@@ -163,14 +149,9 @@ void defineGeo(py::module_& geo, const State& state) {
       [state](const DimTags& dimTags, double dx, double dy, double dz,
               const std::vector<int>& numElements, const std::vector<double>& heights,
               bool recombine) {
-        ExtrusionLayers layers{numElements, heights, recombine};
-        // Layers without heights: as many of equal height, as the reference spaces them.
-        const auto count = static_cast<double>(numElements.size());
-        if (heights.empty())
-          for (std::size_t k = 1; k <= numElements.size(); ++k)
-            layers.heights.push_back(static_cast<double>(k) / count);
         return dimTagList(state->live().builtIn().extrude(
-            entityIds(dimTags), ExtrusionMotion::translate({dx, dy, dz}), layers));
+            entityIds(dimTags), ExtrusionMotion::translate({dx, dy, dz}),
+            layersOf(numElements, heights, recombine)));
       },
       py::arg("dimTags"), py::arg("dx"), py::arg("dy"), py::arg("dz"),
       py::arg("numElements") = std::vector<int>{}, py::arg("heights") = std::vector<double>{},
