@@ -36,16 +36,14 @@ RecordType recordType(const std::string& type) {
   if (type == "T2") return {RecordType::Kind::Text2};
   if (type == "T3") return {RecordType::Kind::Text3};
   if (type == "TIME") return {RecordType::Kind::Time};
-  if (type.size() < 2 || type.size() > 3) return r;
-  const std::string kinds = "SVT", shapes = "PLTQSHIY";
-  const auto kind = kinds.find(type[0]), shape = shapes.find(type[1]);
-  if (kind == std::string::npos || shape == std::string::npos) return r;
-  if (type.size() == 3 && (type[2] != '2' || type[1] == 'P')) return r;
+  const std::optional<post::ListType> list = post::listTypeOf(type);
+  if (!list) return r;
   r.what = RecordType::Kind::Element;
-  r.field = static_cast<post::FieldKind>(kind);
-  r.shape = static_cast<post::ElementShape>(shape);
-  r.order = type.size() == 3 ? 2 : 1;
-  r.nodes = r.order == 2 ? kSecondOrderNodes[shape] : post::cornerCount(r.shape);
+  r.field = list->field;
+  r.shape = list->shape;
+  r.order = list->order;
+  r.nodes = r.order == 2 ? kSecondOrderNodes[static_cast<int>(r.shape)]
+                         : post::cornerCount(r.shape);
   return r;
 }
 

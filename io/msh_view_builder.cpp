@@ -64,10 +64,11 @@ std::vector<std::vector<const double*>> valueStarts(const MeshData& data, std::s
   return starts;
 }
 
-// The element lists of a view with MeshData: every mesh element with values at each of its
-// nodes in every step (complete second-order elements as order-2 lists, other high-order
-// elements by their corners).
-void buildLists(post::View& view, const Mesh& mesh, const MeshData& data) {
+}  // namespace
+
+void buildMeshDataLists(post::View& view, const Mesh& mesh) {
+  view.lists.clear();
+  const MeshData& data = *view.meshData;
   const std::vector<MeshElement> elements = meshElements(mesh);
   const auto starts = valueStarts(data, mesh.nodeCount(), elements.size());
   const FieldKind kind = kindOfComponents(data.components);
@@ -104,8 +105,6 @@ void buildLists(post::View& view, const Mesh& mesh, const MeshData& data) {
   }
 }
 
-}  // namespace
-
 int readMshViews(const std::string& path, const Mesh& mesh, post::ViewStore& views) {
   const std::string data = readViewFile(path);
   std::vector<DataSection> sections = readMshDataSections(data, path, mesh);
@@ -132,8 +131,8 @@ int readMshViews(const std::string& path, const Mesh& mesh, post::ViewStore& vie
       view.times.push_back(s->step.time);
       meshData.steps.push_back(std::move(s->step));
     }
-    buildLists(view, mesh, meshData);
     view.meshData = std::move(meshData);
+    buildMeshDataLists(view, mesh);
   }
   return static_cast<int>(order.size());
 }

@@ -33,6 +33,12 @@ int readListBasedPos(const std::string& path, post::ViewStore& views);
 // node or element the mesh lacks is a ViewReadError at its line (or byte).
 int readMshViews(const std::string& path, const Mesh& mesh, post::ViewStore& views);
 
+// Rebuilds the element lists of a view with MeshData over `mesh`: every mesh element with
+// values at each of its nodes in every step (complete second-order elements as order-2 lists,
+// other high-order elements by their corners; 2 components padded to a vector, 6 made a full
+// symmetric tensor).
+void buildMeshDataLists(post::View& view, const Mesh& mesh);
+
 // Writes one view: ".pos" in the parsed format (every element list, time steps and texts);
 // ".msh" as MSH 4.1 (2.2 when `mshVersion` is 2.2) ASCII: a view with MeshData over `mesh`
 // as that data (the mesh written with it), a list-based view as its own nodes and elements

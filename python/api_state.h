@@ -17,6 +17,8 @@
 #include "app/console_log.h"
 #include "kernel/geometry_factory.h"
 #include "kernel/model.h"
+#include "mesh/views/plugins.h"
+#include "python/python_stream.h"
 
 namespace geomesh::python {
 
@@ -76,6 +78,9 @@ struct LiveSession {
   // A call recognised but not supported warns once per session: true the first time.
   bool firstWarning(const std::string& call) { return warnedCalls.insert(call).second; }
 
+  // What scripts print (Printf) goes to sys.stdout, log lines to sys.stderr.
+  PythonStream out{"stdout"};
+  PythonStream err{"stderr"};
   RecordingLog log;
   Session session;
   GeometryFactory* occ = nullptr;
@@ -87,6 +92,8 @@ struct LiveSession {
   std::map<std::string, std::vector<std::string>> onelabStrings;
   // Colors given to options (option.setColor), read back by option.getColor.
   std::map<std::string, std::array<int, 4>> colors;
+  // The options given to plugins (plugin.setNumber/setString), by plugin name.
+  std::map<std::string, post::PluginOptions> pluginOptions;
 };
 
 // The module's state: the current session, made on first use.
@@ -155,5 +162,9 @@ void defineModelQueries(pybind11::module_& model, const State& state);
 void defineMeshConstraints(pybind11::module_& mesh, const State& state);
 // geomesh.logger, fltk, graphics, onelab; option.setColor/getColor (python/misc_api.cpp).
 void defineFrontEnds(pybind11::module_& m, pybind11::module_& option, const State& state);
+// geomesh.view and geomesh.view.option (python/views_api.cpp); geomesh.plugin
+// (python/plugin_api.cpp).
+void defineViews(pybind11::module_& view, const State& state);
+void definePlugins(pybind11::module_& plugin, const State& state);
 
 }  // namespace geomesh::python

@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <iostream>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -39,7 +38,7 @@ py::object moduleAttribute(const char* name) {
 
 }  // namespace
 
-LiveSession::LiveSession() : log(std::cerr, 5), session(log, std::cout) {
+LiveSession::LiveSession() : log(err, 5), session(log, out) {
   // The OpenCASCADE-first factory SetFactory("OpenCASCADE") selects; the built-in one stays
   // selected, as in a script that never calls SetFactory.
   session.factories().select("OpenCASCADE");
@@ -409,6 +408,10 @@ void defineModelApi(py::module_& m) {
   py::module_ option = m.def_submodule("option", "The options of the session.");
   defineOptions(option, state);
   defineFrontEnds(m, option, state);
+  py::module_ view = m.def_submodule("view", "The post-processing views of the session.");
+  defineViews(view, state);
+  py::module_ plugin = m.def_submodule("plugin", "The plugins that make and change views.");
+  definePlugins(plugin, state);
 }
 
 }  // namespace geomesh::python

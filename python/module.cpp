@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,6 +20,7 @@
 #include "app/mesh_summary.h"
 #include "app/script_run.h"
 #include "python/bindings.h"
+#include "python/python_stream.h"
 #include "grammar/diagnostic.h"
 #include "mesh/core/mesh_error.h"
 #include "stdlib/build_info.h"
@@ -79,16 +79,26 @@ CommandLine runSettings(const std::filesystem::path& path, int dim, const Number
   return settings;
 }
 
+// A script run whose output goes to Python's streams: Printf to sys.stdout, log lines to
+// sys.stderr.
+struct PythonScriptRun {
+  explicit PythonScriptRun(CommandLine settings) : run(std::move(settings), out, err) {}
+  PythonStream out{"stdout"};
+  PythonStream err{"stderr"};
+  ScriptRun run;
+};
+
 // Evaluates, then meshes, without the GIL. A ScriptError met while meshing is a meshing
 // failure located at the statement of its entity: it raises MeshError, with its location.
 std::unique_ptr<MeshResult> runScript(const ErrorTypes& errors, CommandLine settings) {
-  auto run = std::make_unique<ScriptRun>(std::move(settings), std::cout, std::cerr);
+  auto owned = std::make_unique<PythonScriptRun>(std::move(settings));
+  ScriptRun& run = owned->run;
   bool meshing = false;
   try {
     py::gil_scoped_release release;
-    if (run->evaluate()) {
+    if (run.evaluate()) {
       meshing = true;
-      run->meshAndWrite();
+      run.meshAndWrite();
     }
   } catch (const ScriptError& e) {
     raise(meshing ? errors.mesh : errors.script, e.what(), &e.location());
@@ -96,8 +106,8 @@ std::unique_ptr<MeshResult> runScript(const ErrorTypes& errors, CommandLine sett
     raise(errors.mesh, e.what(), nullptr);
   }
   // Nothing changes a finished run's mesh: the views of its arrays stay valid.
-  std::shared_ptr<ScriptRun> owner = std::move(run);
-  Session& session = owner->session();
+  std::shared_ptr<PythonScriptRun> owner = std::move(owned);
+  Session& session = owner->run.session();
   return std::make_unique<MeshResult>(std::move(owner), session);
 }
 

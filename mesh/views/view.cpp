@@ -20,6 +20,16 @@ int shapeDimension(ElementShape shape) {
 
 char shapeLetter(ElementShape shape) { return "PLTQSHIY"[static_cast<int>(shape)]; }
 
+std::optional<ListType> listTypeOf(std::string_view name) {
+  if (name.size() < 2 || name.size() > 3) return std::nullopt;
+  constexpr std::string_view kinds = "SVT", shapes = "PLTQSHIY";
+  const auto kind = kinds.find(name[0]), shape = shapes.find(name[1]);
+  if (kind == std::string_view::npos || shape == std::string_view::npos) return std::nullopt;
+  if (name.size() == 3 && (name[2] != '2' || name[1] == 'P')) return std::nullopt;
+  return ListType{static_cast<FieldKind>(kind), static_cast<ElementShape>(shape),
+                  name.size() == 3 ? 2 : 1};
+}
+
 int componentCount(FieldKind kind) {
   switch (kind) {
     case FieldKind::Scalar: return 1;

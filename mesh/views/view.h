@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "mesh/core/element_type.h"
@@ -37,6 +38,16 @@ constexpr ElementFamily familyOfShape(ElementShape shape) {
 enum class FieldKind : std::uint8_t { Scalar, Vector, Tensor };
 int componentCount(FieldKind kind);
 char kindLetter(FieldKind kind);  // 'S', 'V', 'T'
+
+// The type of a list record by its name, as .pos files, View blocks and the API spell it: the
+// field letter (S, V, T), the shape letter (P L T Q S H I Y), then "2" for second order (not
+// for points): "SP", "VL", "ST2"...; nullopt for any other name.
+struct ListType {
+  FieldKind field = FieldKind::Scalar;
+  ElementShape shape = ElementShape::Point;
+  int order = 1;
+};
+std::optional<ListType> listTypeOf(std::string_view name);
 
 // Elements of one shape, one field kind and one order (ST for scalar triangles, VS2 for
 // vector second-order tetrahedra...). Element e has `nodesPerElement` nodes whose

@@ -31,7 +31,9 @@ from ._geomesh import (
     model,
     onelab,
     option,
+    plugin,
     run,
+    view,
     write,
 )
 
@@ -53,6 +55,8 @@ __all__ = [
     "model",
     "onelab",
     "option",
+    "plugin",
     "run",
+    "view",
     "write",
 ]

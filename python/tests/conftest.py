@@ -4,6 +4,8 @@ import pathlib
 
 import pytest
 
+import geomesh
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 # A unit square whose size `lc` a run may change (numbers={"lc": ...}), with two groups.
@@ -44,3 +46,13 @@ def write_script(tmp_path):
 @pytest.fixture
 def square(write_script):
     return write_script(SQUARE, "square.geo")
+
+
+@pytest.fixture
+def api_session():
+    """An empty model with default options for the module-level API, finalized afterwards."""
+    geomesh.finalize()
+    geomesh.initialize()
+    geomesh.option.setNumber("General.Verbosity", 2)
+    yield
+    geomesh.finalize()

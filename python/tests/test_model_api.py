@@ -12,14 +12,8 @@ geo = geomesh.model.geo
 occ = geomesh.model.occ
 
 
-@pytest.fixture(autouse=True)
-def fresh_session():
-    """Each test starts from an empty model with default options, and leaves none behind."""
-    geomesh.finalize()
-    geomesh.initialize()
-    geomesh.option.setNumber("General.Verbosity", 2)
-    yield
-    geomesh.finalize()
+# Each test starts from an empty model with default options, and leaves none behind.
+pytestmark = pytest.mark.usefixtures("api_session")
 
 
 def unit_square(size=0.1):
