@@ -4,15 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "io/discrete_mesh.h"
 #include "io/formats.h"
 #include "io/mesh_scanner.h"
+#include "tests/scratch.h"
 
 namespace geomesh::testing {
 
@@ -54,6 +57,25 @@ inline void buildHexCube(Model& model, Mesh& mesh) {
   mesh.entity({3, 1}).block(ElementType::Hex8).nodes = {0, 1, 3, 2, 4, 5, 7, 6};
   addDiscreteEntities(model, mesh);
 }
+// Writing a mesh of one hexahedron to a surface-only `format` fails with a message naming the
+// format (and holding `detail`), and leaves no file and no partial file behind.
+inline void expectVolumeMeshRefused(const char* format, const std::string& detail) {
+  Model model;
+  Mesh mesh;
+  buildHexCube(model, mesh);
+  const std::filesystem::path path = scratch::path(std::string("volume.") + format);
+  try {
+    writeMeshFile(path.string(), *findFormatByName(format), model, mesh, {});
+    FAIL() << "written";
+  } catch (const std::runtime_error& e) {
+    const std::string expected =
+        std::string(format) + " files hold surface elements only" + detail;
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path.string() + ".partial"));
+}
+
 
 inline std::string writeAs(const char* format, const Model& model, const Mesh& mesh,
                            bool binary = false, bool saveAll = false) {

@@ -173,19 +173,7 @@ TEST(Ply, ATruncatedBinaryFileIsAnError) {
 }
 
 TEST(Ply, AVolumeMeshIsRefusedAndNoFileIsLeft) {
-  Model model;
-  Mesh mesh;
-  buildHexCube(model, mesh);
-  const std::filesystem::path path = scratch::path("volume.ply");
-  try {
-    writeMeshFile(path.string(), *findFormatByName("ply"), model, mesh, {});
-    FAIL() << "written";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("ply files hold surface elements only"),
-              std::string::npos)
-        << e.what();
-  }
-  EXPECT_FALSE(std::filesystem::exists(path));
+  expectVolumeMeshRefused("ply", "");
 }
 
 TEST(Ply, DamagedFilesAreErrorsNeverCrashes) {
