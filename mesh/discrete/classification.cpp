@@ -54,26 +54,6 @@ std::uint32_t useFrom(std::span<const TriangleVertices> triangles, std::uint32_t
   return triangles[use / 3][use % 3];
 }
 
-// Union-find whose representative is the smallest index of its set.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t count) : parent_(count) {
-    std::iota(parent_.begin(), parent_.end(), 0u);
-  }
-  std::uint32_t find(std::uint32_t a) {
-    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
-    return a;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
-
 // Joins the two triangles of each manifold edge for which `joined(a, b)` holds.
 template <class Joined>
 void joinAcrossManifoldEdges(const EdgeTable& edges, DisjointSets& sets, Joined joined) {

@@ -2,19 +2,12 @@
 #include "mesh/discrete/mesh_triangles.h"
 
 #include <limits>
-#include <numeric>
 
 namespace geomesh {
 
 namespace {
 
 constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
-
-// Union-find root with path halving.
-std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
-  while (parent[v] != v) v = parent[v] = parent[parent[v]];
-  return v;
-}
 
 }  // namespace
 
@@ -46,17 +39,15 @@ MeshTriangles meshTriangles(const Mesh& mesh) {
 }
 
 std::vector<Triangulation> connectedParts(const Triangulation& t) {
-  std::vector<std::uint32_t> parent(t.points.size());
-  std::iota(parent.begin(), parent.end(), 0u);
+  DisjointSets sets(t.points.size());
   for (const TriangleVertices& v : t.triangles) {
-    const std::uint32_t a = root(parent, v[0]);
-    parent[root(parent, v[1])] = a;
-    parent[root(parent, v[2])] = a;
+    sets.join(v[0], v[1]);
+    sets.join(v[0], v[2]);
   }
   std::vector<Triangulation> parts;
   std::vector<std::uint32_t> partOf(t.points.size(), kUnset), local(t.points.size(), kUnset);
   for (const TriangleVertices& v : t.triangles) {
-    std::uint32_t& part = partOf[root(parent, v[0])];
+    std::uint32_t& part = partOf[sets.find(v[0])];
     if (part == kUnset) {
       part = static_cast<std::uint32_t>(parts.size());
       parts.emplace_back();

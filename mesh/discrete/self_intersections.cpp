@@ -41,19 +41,18 @@ Vec3 meetingPoint(const Kernel::Triangle_3& a, const Kernel::Triangle_3& b) {
 
 SelfIntersections selfIntersections(const Triangulation& t, std::size_t keep) {
   std::vector<Kernel::Triangle_3> triangles;
-  std::vector<Box> boxes;
+  std::vector<Box> boxes;  // of the triangles that are not degenerate, which cross nothing
   triangles.reserve(t.triangles.size());
   boxes.reserve(t.triangles.size());
   for (std::uint32_t k = 0; k < t.triangles.size(); ++k) {
     const TriangleVertices& v = t.triangles[k];
     triangles.emplace_back(cgal(t.points[v[0]]), cgal(t.points[v[1]]), cgal(t.points[v[2]]));
-    boxes.emplace_back(triangles.back().bbox(), k);
+    if (!triangles.back().is_degenerate()) boxes.emplace_back(triangles.back().bbox(), k);
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing;
   auto test = [&](const Box& a, const Box& b) {
     const std::uint32_t i = std::min(a.info(), b.info()), j = std::max(a.info(), b.info());
     if (shareVertex(t.triangles[i], t.triangles[j])) return;
-    if (triangles[i].is_degenerate() || triangles[j].is_degenerate()) return;
     if (CGAL::do_intersect(triangles[i], triangles[j])) crossing.emplace_back(i, j);
   };
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test);

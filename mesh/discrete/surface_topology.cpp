@@ -30,19 +30,6 @@ std::vector<EdgeUse> sortedEdgeUses(std::span<const TriangleVertices> triangles)
   return uses;
 }
 
-class VertexSets {
- public:
-  explicit VertexSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  std::uint32_t root(std::uint32_t v) {
-    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-    return v;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { parent_[root(a)] = root(b); }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
-
 struct Edge {
   std::uint32_t a, b;
 };
@@ -96,7 +83,7 @@ struct ComponentCounts {
 SurfaceTopologyReport surfaceTopology(const Triangulation& t) {
   SurfaceTopologyReport report;
   const std::size_t n = t.points.size();
-  VertexSets sets(n);
+  DisjointSets sets(n);
   std::vector<bool> used(n, false);
   for (const TriangleVertices& v : t.triangles) {
     for (std::uint32_t k : v) used[k] = true;
@@ -105,28 +92,28 @@ SurfaceTopologyReport surfaceTopology(const Triangulation& t) {
   }
   std::vector<ComponentCounts> counts(n);
   for (std::uint32_t v = 0; v < n; ++v)
-    if (used[v]) ++report.vertices, ++counts[sets.root(v)].vertices;
-  for (const TriangleVertices& v : t.triangles) ++counts[sets.root(v[0])].triangles;
+    if (used[v]) ++report.vertices, ++counts[sets.find(v)].vertices;
+  for (const TriangleVertices& v : t.triangles) ++counts[sets.find(v[0])].triangles;
 
   const std::vector<EdgeUse> uses = sortedEdgeUses(t.triangles);
   std::vector<Edge> boundary;
   for (std::size_t i = 0, j; i < uses.size(); i = j) {
     for (j = i + 1; j < uses.size() && uses[j].low == uses[i].low && uses[j].high == uses[i].high;)
       ++j;
-    ++report.edges, ++counts[sets.root(uses[i].low)].edges;
+    ++report.edges, ++counts[sets.find(uses[i].low)].edges;
     if (j - i == 1) boundary.push_back({uses[i].low, uses[i].high});
     if (j - i == 2 && uses[i].forward == uses[i + 1].forward) ++report.inconsistentEdges;
     if (j - i > 2) ++report.nonManifoldEdges;
   }
   for (std::uint32_t start : boundaryLoopStarts(boundary, n))
-    ++report.boundaryLoops, ++counts[sets.root(start)].loops;
+    ++report.boundaryLoops, ++counts[sets.find(start)].loops;
 
   report.triangles = t.triangles.size();
   report.euler = static_cast<int>(static_cast<std::int64_t>(report.vertices) -
                                   static_cast<std::int64_t>(report.edges) +
                                   static_cast<std::int64_t>(report.triangles));
   for (std::uint32_t v = 0; v < n; ++v) {
-    if (!used[v] || sets.root(v) != v) continue;
+    if (!used[v] || sets.find(v) != v) continue;
     const ComponentCounts& c = counts[v];
     ++report.components;
     report.genus += static_cast<int>((2 - (c.vertices - c.edges + c.triangles) - c.loops) / 2);

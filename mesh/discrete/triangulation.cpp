@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 #include <tuple>
 
 namespace geomesh {
@@ -84,6 +85,21 @@ std::vector<std::vector<std::uint32_t>> boundaryLoops(
     loops.push_back(std::move(loop));
   }
   return loops;
+}
+
+DisjointSets::DisjointSets(std::size_t count) : parent_(count) {
+  std::iota(parent_.begin(), parent_.end(), 0u);
+}
+
+std::uint32_t DisjointSets::find(std::uint32_t a) {
+  while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+  return a;
+}
+
+void DisjointSets::join(std::uint32_t a, std::uint32_t b) {
+  a = find(a);
+  b = find(b);
+  if (a != b) parent_[std::max(a, b)] = std::min(a, b);
 }
 
 Vec3 triangleNormal(const Triangulation& t, std::uint32_t triangle) {

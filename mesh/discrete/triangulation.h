@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -37,6 +38,18 @@ TriangleAdjacency triangleAdjacency(std::span<const TriangleVertices> triangles)
 // each run in the direction its triangles give it, so that they lie on its left. Edges used by
 // one triangle only; a vertex where the boundary touches itself starts a new cycle there.
 std::vector<std::vector<std::uint32_t>> boundaryLoops(std::span<const TriangleVertices> triangles);
+
+// Union-find over indices (vertices, triangles), its representative the smallest index of
+// its set.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t count);
+  std::uint32_t find(std::uint32_t a);
+  void join(std::uint32_t a, std::uint32_t b);
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
 
 Vec3 triangleNormal(const Triangulation& t, std::uint32_t triangle);  // unit (zero if degenerate)
 double triangleArea(const Triangulation& t, std::uint32_t triangle);

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,29 +20,23 @@ namespace {
 // closed surfaces face outwards (the sign of the mean curvature then follows the usual rule:
 // positive on a sphere).
 void turnClosedPartsOutwards(Triangulation& t) {
-  std::vector<std::uint32_t> parent(t.points.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto root = [&](std::uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  DisjointSets parts(t.points.size());
   for (const TriangleVertices& v : t.triangles) {
-    const std::uint32_t a = root(v[0]);
-    parent[root(v[1])] = a;
-    parent[root(v[2])] = a;
+    parts.join(v[0], v[1]);
+    parts.join(v[0], v[2]);
   }
   std::vector<double> volume(t.points.size(), 0);
   std::vector<char> open(t.points.size(), 0);
   const TriangleAdjacency adjacency = triangleAdjacency(t.triangles);
   for (std::uint32_t k = 0; k < t.triangles.size(); ++k) {
     const TriangleVertices& v = t.triangles[k];
-    const std::uint32_t r = root(v[0]);
+    const std::uint32_t r = parts.find(v[0]);
     volume[r] += dot(t.points[v[0]], cross(t.points[v[1]], t.points[v[2]]));
     for (std::uint32_t n : adjacency.neighbours[k])
       if (n == kNoTriangle) open[r] = 1;
   }
   for (TriangleVertices& v : t.triangles) {
-    const std::uint32_t r = root(v[0]);
+    const std::uint32_t r = parts.find(v[0]);
     if (!open[r] && volume[r] < 0) std::swap(v[1], v[2]);
   }
 }
