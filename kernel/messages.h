@@ -14,6 +14,9 @@ class MessageSink {
   virtual void warning(std::string_view message) = 0;
   // Extra detail shown only at high verbosity.
   virtual void debug(std::string_view) {}
+  // How far a long stage ("Meshing 3D") has come, from 0 to 1; 1 ends it. Called from one
+  // thread at a time, often: a sink that shows it decides how often to redraw.
+  virtual void progress(std::string_view /*stage*/, double /*fraction*/) {}
 };
 
 // A sink that drops everything.

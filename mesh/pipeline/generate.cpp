@@ -39,6 +39,8 @@
 namespace geomesh {
 namespace {
 
+std::string stageName(int dim) { return "Meshing " + std::to_string(dim) + "D"; }
+
 // Times one stage; done() reports "Meshing <dim>D... done (<seconds> s, <count> <elements>)".
 class StageTimer {
  public:
@@ -46,6 +48,7 @@ class StageTimer {
   void done(MessageSink& log, std::size_t count, const char* what) const {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    log.progress(stageName(dim_), 1);
     char line[128];
     std::snprintf(line, sizeof line, "Meshing %dD... done (%.3g s, %zu %s)", dim_, seconds, count,
                   what);
@@ -55,6 +58,28 @@ class StageTimer {
  private:
   int dim_;
   std::chrono::steady_clock::time_point start_;
+};
+
+// The progress of a stage made of parts (surfaces, volumes), each from 0 to 1, given to the
+// log as their mean. Parts may report from several threads at once.
+class StageProgress {
+ public:
+  StageProgress(MessageSink& log, int dim, std::size_t parts)
+      : log_(log), stage_(stageName(dim)), done_(std::max<std::size_t>(parts, 1), 0.0) {}
+  void set(std::size_t part, double fraction) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (part >= done_.size()) return;
+    sum_ += fraction - done_[part];
+    done_[part] = fraction;
+    log_.progress(stage_, std::clamp(sum_ / static_cast<double>(done_.size()), 0.0, 1.0));
+  }
+
+ private:
+  MessageSink& log_;
+  std::string stage_;
+  std::vector<double> done_;
+  double sum_ = 0;
+  std::mutex mutex_;
 };
 
 void meshPoints(const Model& model, const SizeRules& rules, const SizeFields& fields,
@@ -269,6 +294,8 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
   const PeriodicCopier periodic(model);
   // Boundary layers grown from surfaces (their curves too) come once those surfaces are meshed.
   std::vector<PlannedEntity> layers;
+  StageProgress progress(log, 2, model.surfaces().size());
+  std::size_t meshed = 0;
   auto meshPlanned = [&](const PlannedEntity& p) {
     const EntityId id{2, p.tag};
     if (p.method == MeshingMethod::Own)
@@ -279,6 +306,7 @@ void meshSurfaces(const SurfaceStage& stage, Mesh& mesh) {
       extruded.meshImage(id, mesh);
     else
       periodic.copySurface(p.tag, mesh);
+    progress.set(meshed++, 1);
   };
   for (const PlannedEntity& p : meshingOrder(model, 2, {})) {
     if (model.surface(p.tag)->discrete) continue;  // copied from the merged file
@@ -334,7 +362,9 @@ namespace {
 // are not made to be read by several threads at once). The first volume in that order that
 // fails stops the meshing there, as it would on one thread.
 void meshTetrahedralVolumes(const Model& model, const MeshOptions& options,
-                            const std::vector<int>& tags, const SizeFields& fields, Mesh& mesh) {
+                            const std::vector<int>& tags, const SizeFields& fields, Mesh& mesh,
+                            MessageSink& log) {
+  StageProgress progress(log, 3, tags.size());
   const std::size_t threads =
       std::clamp<std::size_t>(options.numThreads > 0 ? options.numThreads : 1, 1, tags.size());
   std::vector<VolumeMeshing> planned(tags.size());
@@ -350,7 +380,8 @@ void meshTetrahedralVolumes(const Model& model, const MeshOptions& options,
             const std::lock_guard<std::mutex> lock(fieldLock);
             return fields.at(p, where);
           };
-        planned[i] = planVolumeMesh(model, options, tags[i], interiorSize, mesh);
+        const VolumeProgress report = [&progress, i](double f) { progress.set(i, f); };
+        planned[i] = planVolumeMesh(model, options, tags[i], interiorSize, mesh, report);
       } catch (...) {
         failed[i] = std::current_exception();
       }
@@ -421,7 +452,7 @@ void meshStages(const Model& model, const MeshOptions& options, int dim,
       tetrahedral.push_back(entry.first);
     }
     // Every available row of the registry is meshVolume, planned and committed apart here.
-    meshTetrahedralVolumes(model, options, tetrahedral, fields, mesh);
+    meshTetrahedralVolumes(model, options, tetrahedral, fields, mesh, log);
     extruded.meshVolumes(mesh);
     const MeshCheckReport report = checkVolumeElements(model, mesh);
     if (!report.ok())

@@ -173,6 +173,7 @@ class Refinement {
       spaceOut();
       active.clear();
       if (insertCandidates(active) == 0) break;
+      if (sizes_.afterRound) sizes_.afterRound(mesh_.tetCount());
     }
     return stats_;
   }

@@ -19,6 +19,8 @@ struct RefinementSizes {
   // Whether sizes interpolated from the boundary bound the field's (Mesh.MeshSizeExtendFromBoundary);
   // without a field they are the only sizes.
   bool extendFromBoundary = true;
+  // Called after each round of insertion, with the number of tetrahedra then (progress).
+  std::function<void(std::size_t tetrahedra)> afterRound;
 };
 
 struct RefinementStats {

@@ -334,7 +334,13 @@ std::vector<Pyramid> standPyramids(const ModelVolume& volume, VolumePlc& plc,
 }  // namespace
 
 VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int volumeTag,
-                             const InteriorSize& interiorSize, const Mesh& mesh) {
+                             const InteriorSize& interiorSize, const Mesh& mesh,
+                             const VolumeProgress& progress) {
+  // Shares of the work, as measured on a cube: recovery, refinement, smoothing, optimization.
+  constexpr double kRecovered = 0.1, kRefined = 0.7, kSmoothed = 0.8;
+  const auto report = [&progress](double fraction) {
+    if (progress) progress(fraction);
+  };
   const ModelVolume* volume = model.volume(volumeTag);
   if (!volume) throw MeshError({3, volumeTag}, "the volume does not exist");
   VolumeMeshing result;
@@ -345,8 +351,8 @@ VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int
   std::vector<Vec3> xyz;
   for (NodeIndex n : plc.nodes) xyz.push_back(mesh.node(n));
   // Refused before any costly work when it would not fit.
-  if (const std::string why = tooManyTetrahedra(estimateTetrahedra(plc, xyz, options));
-      !why.empty())
+  const double estimate = estimateTetrahedra(plc, xyz, options);
+  if (const std::string why = tooManyTetrahedra(estimate); !why.empty())
     throw MeshError({3, volumeTag}, why + " (sizes too small for the volume?)");
   result.pyramids = standPyramids(*volume, plc, xyz);
   rejectEmbeddedOutside(*volume, plc, xyz);
@@ -362,6 +368,12 @@ VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int
   std::vector<double> plcSizes = plcNodeSizes(plc, xyz, options);
   RefinementSizes sizes;
   DelaunayTets tets = recoverTetrahedra(*volume, plc, xyz, holes, plcSizes, sizes.atVertex);
+  report(kRecovered);
+  if (progress && estimate > 0)
+    sizes.afterRound = [&report, estimate](std::size_t count) {
+      const double refined = std::min(1.0, static_cast<double>(count) / estimate);
+      report(kRecovered + (kRefined - kRecovered) * refined);
+    };
   if (interiorSize) {
     const double factor = options.sizeFactor > 0 ? options.sizeFactor : 1;
     sizes.field = [&interiorSize, factor, &options](Vec3 p) {
@@ -370,12 +382,15 @@ VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int
     sizes.extendFromBoundary = options.sizeExtendFromBoundary;
   }
   refineToSizes(tets, sizes);
+  report(kRefined);
   const auto firstInterior = static_cast<std::uint32_t>(plc.nodes.size());
   if (options.optimize) smoothVertices(tets, firstInterior, kSmoothingPasses);
+  report(kSmoothed);
   result.tets = tets.liveTetrahedra();
   result.points = std::move(tets.points);
   tets = DelaunayTets();  // its links are not needed any more: memory back before optimizing
   optimizeTetrahedra(plc, options, firstInterior, result.points, result.tets);
+  report(1);
   return result;
 }
 

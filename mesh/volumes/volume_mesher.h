@@ -45,10 +45,15 @@ struct VolumeMeshing {
   std::vector<Pyramid> pyramids;
 };
 
+// How far the planning of one volume has come, from 0 to 1 (about: refinement is measured
+// against the estimate of its tetrahedra).
+using VolumeProgress = std::function<void(double fraction)>;
+
 // The first half of meshVolume: reads `mesh` only, so that several volumes may be planned at
-// once (`interiorSize` must then be safe to call from several threads).
+// once (`interiorSize` and `progress` must then be safe to call from several threads).
 VolumeMeshing planVolumeMesh(const Model& model, const MeshOptions& options, int volumeTag,
-                             const InteriorSize& interiorSize, const Mesh& mesh);
+                             const InteriorSize& interiorSize, const Mesh& mesh,
+                             const VolumeProgress& progress = {});
 
 // The second half: adds the planned nodes, tetrahedra and pyramids to the volume's mesh, then
 // checks that the embedded entities are kept.
