@@ -2,6 +2,7 @@
 #include "api/output.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <ostream>
 #include <set>
@@ -55,6 +56,16 @@ MeshWriteOptions writeOptions(const OptionRegistry& options) {
   w.saveGroupsOfNodes = clampedInteger<int>(options.number("Mesh.SaveGroupsOfNodes"));
   w.partitionOldStyleMsh2 = options.number("Mesh.PartitionOldStyleMsh2") != 0;
   w.splitPartitions = options.number("Mesh.PartitionSplitMeshFiles") != 0;
+  const auto pixels = [&](const char* print, const char* graphics) {
+    const double size = options.number(print);
+    return clampedInteger<int>(size > 0 ? size : options.number(graphics));
+  };
+  w.pictureWidth = pixels("Print.Width", "General.GraphicsWidth");
+  w.pictureHeight = pixels("Print.Height", "General.GraphicsHeight");
+  const std::array<double, 3> rotation{options.number("General.RotationX"),
+                                       options.number("General.RotationY"),
+                                       options.number("General.RotationZ")};
+  if (rotation != std::array<double, 3>{0, 0, 0}) w.viewRotation = rotation;
   return w;
 }
 
@@ -83,7 +94,7 @@ std::string unsavedEntities(const Model& model, const Mesh& mesh) {
 
 void writeMesh(const Session& session, const std::string& path, const MeshFormat& format) {
   const MeshWriteOptions options = writeOptions(session.options());
-  if (!options.saveAll)
+  if (!options.saveAll && !format.showsAllElements)
     if (const std::string left = unsavedEntities(session.model(), session.mesh()); !left.empty())
       session.log().warning(
           "'" + path + "' leaves out the elements of " + left +

@@ -16,12 +16,14 @@ namespace geomesh::api {
 const MeshFormat& outputFormat(const OptionRegistry& options, const std::string& path,
                                const std::string& formatName = "");
 
-// Mesh.SaveAll and Mesh.Binary.
+// Mesh.SaveAll, Mesh.Binary and the other options writers read (the size and view of
+// pictures: Print.Width, General.RotationX, ...).
 MeshWriteOptions writeOptions(const OptionRegistry& options);
 
 // Writes the session's model and mesh to `path`; nothing is left at `path` on failure
 // (std::runtime_error naming the file). Without Mesh.SaveAll, warns when physical groups leave
-// out meshed entities of a dimension they group, naming them (unsavedEntities).
+// out meshed entities of a dimension they group, naming them (unsavedEntities); not for
+// formats that show every element (pictures).
 void writeMesh(const Session& session, const std::string& path, const MeshFormat& format);
 
 // "volume 3, surface 7 (1234 elements)": the meshed entities that no physical group holds

@@ -84,6 +84,8 @@ bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
     cl.allowSystemCalls = true;
   } else if (flag == "-keep_partial") {
     cl.keepPartial = true;
+  } else if (flag == "-view") {
+    cl.view = true;
   } else if (flag == "-v") {
     cl.verbosity = static_cast<int>(in.number(flag));
   } else if (flag == "-setnumber") {
@@ -115,6 +117,10 @@ bool parseFlag(const std::string& flag, ArgumentReader& in, CommandLine& cl) {
 CommandLine parseCommandLine(const std::vector<std::string>& args) {
   CommandLine cl;
   ArgumentReader in(args);
+  if (!args.empty() && args.front() == "view") {
+    in.take();
+    cl.viewCommand = cl.view = true;
+  }
   while (!in.done()) {
     const std::string& arg = in.take();
     if (arg.size() > 1 && arg[0] == '-') {
@@ -131,8 +137,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
 
 std::string commandLineHelp() {
   return R"(Usage: geomesh [options] file.geo
+       geomesh view [-o page.html] mesh.msh
 
-Meshes a .geo script in batch mode and writes the mesh (MSH 4.1 by default).
+Meshes a .geo script in batch mode and writes the mesh (MSH 4.1 by default). `geomesh view`
+writes a mesh file (any format read) as a self-contained HTML page beside it, and opens it.
 
 Mesh:
   -0, -1, -2, -3         stop after evaluating the geometry (-0), or mesh up to dimension 1, 2, 3
@@ -153,6 +161,8 @@ Mesh:
   -check                 check a mesh file (.msh) and report problems; for any input, the
                          topology of each connected surface (genus, holes, defects)
   -keep_partial          when meshing fails, still write what was meshed
+  -view                  also write the mesh as an HTML page (NAME.html) and open it in a
+                         browser when there is a display
 Script:
   -setnumber NAME VALUE  set a numeric parameter (overrides DefineConstant/DefineNumber)
   -setstring NAME VALUE  set a string parameter (overrides DefineString)

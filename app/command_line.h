@@ -20,6 +20,8 @@ struct CommandLine {
   bool check = false;            // -check
   bool allowSystemCalls = false;  // -allow_system_calls: scripts may run shell commands
   bool keepPartial = false;      // -keep_partial: write what was meshed when meshing fails
+  bool viewCommand = false;      // `geomesh view FILE`: FILE is a mesh to show (-o: the page)
+  bool view = false;             // -view: also write the mesh as an HTML page, and open it
   bool help = false;             // -help, -h
   bool version = false;          // -version
   bool helpOptions = false;      // -help-options

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include "api/meshing.h"
 #include "api/options.h"
@@ -13,6 +14,7 @@
 #include "api/session.h"
 #include "app/command_line.h"
 #include "app/console_log.h"
+#include "app/mesh_page_view.h"
 #include "app/mesh_summary.h"
 #include "app/script_run.h"
 #include "app/surface_check.h"
@@ -50,11 +52,14 @@ void applyOptions(const CommandLine& cl, OptionRegistry& options) {
   for (const auto& [name, value] : cl.numberOptions) options.setNumber(name, value);
 }
 
-// The output file: -o, else the script's path with its extension replaced by ".msh".
+// The output file: -o, else the script's path with its extension replaced by that of the
+// format -format names (t1.png for -format png), ".msh" without one.
 std::string outputPath(const CommandLine& cl) {
   if (!cl.output.empty()) return cl.output;
   std::filesystem::path p(cl.files.front());
-  p.replace_extension(".msh");
+  const MeshFormat* named = cl.format.empty() ? nullptr : findFormatByName(cl.format);
+  const std::string_view extensions = named ? named->extensions : ".msh";
+  p.replace_extension(std::string(extensions.substr(0, extensions.find(' '))));
   return p.string();
 }
 
@@ -112,6 +117,11 @@ void meshAndWrite(const CommandLine& cl, Session& session, ConsoleLog& log) {
   api::writeMesh(session, path, format);
   log.info("Done writing '" + path + "' (" + formatSeconds(writeWatch.seconds()) + ")");
   logSummary(summarizeMesh(session.model(), session.mesh()), log);
+  if (!cl.view) return;
+  if (format.isNamed("html"))
+    openPage(path, log);  // -o page.html: the mesh file is the page
+  else
+    writeMeshPage(session, pagePathBeside(path), log);
 }
 
 bool isMeshFile(const std::string& path) {
@@ -162,15 +172,24 @@ int runMeshFile(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   applyOptions(cl, session.options());
   const int partitions = clampedInteger<int>(session.options().number("Mesh.NbPartitions"));
   if (partitions > 0) api::partitionMesh(session, partitions);
+  if (cl.viewCommand) {  // -o names the page
+    writeMeshPage(session, cl.output.empty() ? pagePathBeside(path) : cl.output, log);
+    return status;
+  }
   if (!cl.output.empty()) {
     api::writeMesh(session, cl.output, api::outputFormat(session.options(), cl.output, cl.format));
     log.info("Wrote '" + cl.output + "'");
   }
+  if (cl.view) writeMeshPage(session, pagePathBeside(path), log);
   return status;
 }
 
 int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
   if (isMeshFile(cl.files.front())) return runMeshFile(cl, out, log);
+  if (cl.viewCommand)
+    throw std::invalid_argument("geomesh view shows a mesh file (" + readExtensionList() +
+                                "), not '" + cl.files.front() + "': to mesh a script and see " +
+                                "its mesh, give -view with -1, -2 or -3");
   Session session(log, out);
   applySettings(cl, session);
   if (!evaluateScriptFile(cl.files.front(), session, log)) return 0;
@@ -181,6 +200,10 @@ int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
       log.info("The script meshed (Mesh n): only its Save statements write files");
     else
       log.info("Nothing meshed: give -1, -2 or -3 to mesh, -0 to check the geometry");
+    if (cl.view && session.mesh().nodeCount() > 0)
+      writeMeshPage(session, pagePathBeside(outputPath(cl)), log);
+    else if (cl.view)
+      log.warning("-view: nothing meshed to show (give -1, -2 or -3)");
     if (cl.check) logSurfaceTopology(session, log);
     return 0;
   }
@@ -191,8 +214,10 @@ int runSession(const CommandLine& cl, std::ostream& out, ConsoleLog& log) {
 
 }  // namespace
 
-int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+               bool terminal) {
   ConsoleLog log(err, 5);
+  log.setTerminal(terminal);
   CommandLine cl;
   try {
     cl = parseCommandLine(args);

@@ -9,6 +9,8 @@ namespace geomesh {
 
 // Runs the geomesh command: `args` without the program name. Script output (Printf) goes to
 // `out`, log lines and diagnostics to `err`. Returns the exit status.
-int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+// `terminal`: `err` is a terminal, where long stages draw a progress bar.
+int runGeomesh(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+               bool terminal = false);
 
 }  // namespace geomesh

@@ -84,6 +84,9 @@ endfunction()
 geomesh_system_library(geomesh_metis metis.h metis "METIS" libmetis-dev)
 # CGNS: the CFD General Notation System files (.cgns), HDF5-based.
 geomesh_system_library(geomesh_cgns cgnslib.h cgns "CGNS" libcgns-dev)
+# libpng: pictures of meshes (.png), linked by io/ only.
+find_package(PNG QUIET)
+geomesh_require(PNG_FOUND "libpng" "libpng-dev")
 
 if(GEOMESH_TESTS)
   find_package(GTest QUIET)

@@ -14,7 +14,8 @@ namespace geomesh {
 
 namespace {
 
-// Options of post-processing, printing and solvers: they change nothing in a batch mesh run.
+// Options of post-processing, printing and solvers: they change nothing in a batch mesh run,
+// except the Print. options the registry holds (the size of pictures written).
 bool isInterfaceOption(std::string_view path) {
   for (std::string_view category : {"Print.", "PostProcessing.", "Solver."})
     if (path.starts_with(category)) return true;
@@ -109,13 +110,14 @@ void Interpreter::executeSetter(const ast::CommandStmt& command, const SourceLoc
 void Interpreter::executeOptionAssign(const ast::OptionAssignStmt& assign,
                                       const SourceLocation& where) {
   if (assign.path.starts_with("View.")) return setViewOption(assign, where);
-  if (isInterfaceOption(assign.path)) {
+  if (isInterfaceOption(assign.path) && !session_.options().find(assign.path)) {
     session_.log().debug(where.file + ":" + std::to_string(where.line) + ": option '" +
                          assign.path + "' has no effect in batch mode");
     return;
   }
   if (executeFieldOption(assign, where)) return;
-  if (!isOptionCategory(assign.path) || assign.index) {
+  if ((!isOptionCategory(assign.path) && !session_.options().find(assign.path)) ||
+      assign.index) {
     warn(where, "option '" + assign.path + "' is not supported yet; ignored");
     return;
   }
@@ -166,7 +168,8 @@ void Interpreter::optionChanged(const std::string& name) {
 
 Value Interpreter::optionValue(const ast::Expr& expr) {
   if (auto view = viewOptionValue(expr)) return *view;
-  if (!isOptionCategory(expr.text) || !expr.args.empty()) {
+  if ((!isOptionCategory(expr.text) && !session_.options().find(expr.text)) ||
+      !expr.args.empty()) {
     warn(expr.loc, "option '" + expr.text + "' is not supported yet; reads as 0");
     return Value::number(0);
   }

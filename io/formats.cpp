@@ -48,6 +48,12 @@ void writeSu2(std::ostream& out, const Model& model, const Mesh& mesh,
 void writeCgns(const std::string& path, const Model& model, const Mesh& mesh,
                const MeshWriteOptions& options);
 void readCgns(const std::string& path, Model& model, Mesh& mesh);
+void writeHtml(std::ostream& out, const Model& model, const Mesh& mesh,
+               const MeshWriteOptions& options);
+void writeSvg(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
+void writePng(std::ostream& out, const Model& model, const Mesh& mesh,
+              const MeshWriteOptions& options);
 
 namespace {
 
@@ -82,6 +88,9 @@ constexpr MeshFormat kFormats[] = {
     {"cgns", ".cgns", 32, 0.0, nullptr, nullptr, 2, writeCgns, readCgns},
     {"inp", ".inp", 39, 0.0, writeInp, nullptr, 2},
     {"su2", ".su2", 42, 0.0, writeSu2, nullptr, 1},
+    {"svg", ".svg", 0, 0.0, writeSvg, nullptr, 4, nullptr, nullptr, false, true},
+    {"png", ".png", 0, 0.0, writePng, nullptr, 4, nullptr, nullptr, false, true},
+    {"html", ".html .htm", 0, 0.0, writeHtml, nullptr, 4},
 };
 
 // The words of a space-separated list.

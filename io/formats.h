@@ -2,7 +2,9 @@
 // extension or Mesh.Format code) goes through this table.
 #pragma once
 
+#include <array>
 #include <iosfwd>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,6 +28,13 @@ struct MeshWriteOptions {
   bool partitionOldStyleMsh2 = true;
   bool splitPartitions = false;
   int onlyPartition = 0;  // > 0: that partition only (set when splitting)
+  // Pictures (SVG, PNG): the size in pixels (Print.Width and Print.Height when set, else
+  // General.GraphicsWidth and General.GraphicsHeight) and the view's Euler angles in degrees
+  // (General.RotationX, Y, Z), unset when all three are 0 (their default): then a planar mesh
+  // is seen from +z and any other from an oblique direction.
+  int pictureWidth = 800;
+  int pictureHeight = 600;
+  std::optional<std::array<double, 3>> viewRotation = std::nullopt;
 };
 
 // Whether a physical group of dimension `dim` is saved as a set under a SaveGroupsOf* value.
@@ -60,6 +69,9 @@ struct MeshFormat {
   // Whether the format holds partitions, so that Mesh.PartitionSplitMeshFiles writes one file
   // per partition (MeshWriteOptions::onlyPartition) instead of one file.
   bool holdsPartitions = false;
+  // Whether the format shows every element whatever the physical groups (pictures), so that
+  // Mesh.SaveAll changes nothing for it.
+  bool showsAllElements = false;
 
   bool writes() const { return write || writeFile; }
   bool reads() const { return read || readFile; }

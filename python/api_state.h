@@ -7,6 +7,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -158,6 +159,13 @@ void defineGeoOperations(pybind11::module_& geo, const State& state);
 void defineOccOperations(pybind11::module_& occ, const State& state);
 // geomesh.model queries: boundaries, values, boxes; display calls (python/model_queries.cpp).
 void defineModelQueries(pybind11::module_& model, const State& state);
+// python/partition_api.cpp: mesh.partition, unpartition, and the partition entities' queries.
+void definePartitions(pybind11::module_& model, pybind11::module_& mesh, const State& state);
+// The partition entities of dimension `dim` (-1: all), listed after the model's own.
+std::vector<EntityId> partitionEntityIds(const Session& session, int dim);
+// The boundary of a partition entity (signed when `oriented`), or nullopt for the model's own.
+std::optional<std::vector<EntityId>> partitionBoundary(const Session& session, EntityId id,
+                                                       bool oriented);
 // geomesh.model.mesh: fields, constraints, discrete surfaces (python/model_mesh_api.cpp).
 void defineMeshConstraints(pybind11::module_& mesh, const State& state);
 // geomesh.logger, fltk, graphics, onelab; option.setColor/getColor (python/misc_api.cpp).

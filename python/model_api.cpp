@@ -106,9 +106,13 @@ void defineModel(py::module_& model, const State& state) {
       [state](int dim) {
         if (dim < -1 || dim > 3)
           throw py::value_error("dim must be -1 (all), 0, 1, 2 or 3, got " + std::to_string(dim));
-        return dimTagList(state->session().model().entities(dim));
+        std::vector<EntityId> ids = state->session().model().entities(dim);
+        for (EntityId id : partitionEntityIds(state->session(), dim)) ids.push_back(id);
+        return dimTagList(ids);
       },
-      py::arg("dim") = -1, "The model's entities [(dim, tag)] (all dimensions: dim = -1).");
+      py::arg("dim") = -1,
+      "The model's entities [(dim, tag)] (all dimensions: dim = -1), then the partition "
+      "entities of a partitioned mesh.");
   model.def(
       "addPhysicalGroup",
       [state](int dim, const std::vector<int>& tags, int tag, const std::string& name) {
@@ -400,6 +404,7 @@ void defineModelApi(py::module_& m) {
   defineMeshing(mesh, state);
   defineMeshConstraints(mesh, state);
   defineModelQueries(model, state);
+  definePartitions(model, mesh, state);
   // Calls both namespaces have: the same function under either name.
   geo.attr("addPhysicalGroup") = model.attr("addPhysicalGroup");
   py::module_ geoMesh = geo.attr("mesh");

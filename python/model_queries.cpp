@@ -95,8 +95,13 @@ void defineModelQueries(py::module_& model, const State& state) {
   model.def(
       "getBoundary",
       [state](const DimTags& dimTags, bool combined, bool oriented, bool recursive) {
-        return dimTagList(boundaryOf(state->session().model(), entityIds(dimTags), combined,
-                                     oriented, recursive));
+        const std::vector<EntityId> ids = entityIds(dimTags);
+        // The pieces of a partitioned mesh bound each other (not recursively).
+        if (ids.size() == 1 && !recursive)
+          if (auto pieces = partitionBoundary(state->session(), ids[0], oriented))
+            return dimTagList(*pieces);
+        return dimTagList(boundaryOf(state->session().model(), ids, combined, oriented,
+                                     recursive));
       },
       py::arg("dimTags"), py::arg("combined") = true, py::arg("oriented") = true,
       py::arg("recursive") = false,

@@ -17,8 +17,14 @@ packages=(
   libocct-visualization-dev libocct-data-exchange-dev
   libgtest-dev
   clang libclang-rt-14-dev
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-venv python3-pil
+  libpng-dev
+  chromium
 )
+# The viewer's page is bundled from the npm registry at build time: Node.js and npm from Debian
+# unless the machine already has them.
+command -v node >/dev/null 2>&1 || packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 
 missing_packages() {
   local p

@@ -1,4 +1,4 @@
-// OptionSpec: one row of the built-in General., Geometry. and Mesh. option tables.
+// OptionSpec: one row of the built-in General., Geometry., Mesh. and Print. option tables.
 #pragma once
 
 #include <span>
@@ -22,5 +22,6 @@ struct OptionSpec {
 std::span<const OptionSpec> generalOptions();
 std::span<const OptionSpec> geometryOptions();
 std::span<const OptionSpec> meshOptions();
+std::span<const OptionSpec> printOptions();
 
 }  // namespace geomesh

@@ -31,7 +31,7 @@ OptionRegistry::Option fromSpec(const OptionSpec& spec) {
 }  // namespace
 
 OptionRegistry::OptionRegistry() {
-  for (auto table : {generalOptions(), geometryOptions(), meshOptions()})
+  for (auto table : {generalOptions(), geometryOptions(), meshOptions(), printOptions()})
     for (const auto& spec : table) options_.push_back(fromSpec(spec));
   std::sort(options_.begin(), options_.end(),
             [](const Option& a, const Option& b) { return a.name < b.name; });

@@ -27,3 +27,7 @@ print(f"{len(nodes)} nodes, {len(corners)} triangles")
 print(f"area from NumPy: {area:.6f}; geomesh's summary: {mesh.summary()['area']:.6f}")
 for dim, tag, name, entities in mesh.physical_groups:
     print(f"physical group {name!r} (dimension {dim}, tag {tag}): entities {entities}")
+
+# write() saves in the format the file name says; a .png (or .svg) is a picture of the whole
+# mesh, drawn without any display: here, into the current directory.
+mesh.write("python_first_mesh.png")

@@ -70,6 +70,8 @@ def block_with_bore(radius=0.2, size=0.08):
     exact = 0.5 * (1 - math.pi * radius**2)
     print(f"block: {len(xyz)} nodes, {len(tets)} tetrahedra")
     print(f"block volume: {volume:.4f} (exact {exact:.4f})")
+    # A picture of the block's mesh (the format follows the name: .png, .svg, .msh, ...).
+    geomesh.write("python_square_and_box.png")
 
 
 geomesh.initialize()

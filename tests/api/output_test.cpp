@@ -1,9 +1,10 @@
 // The library layer's output: which format a file is written in, atomic writes of the mesh,
-// the unrolled geometry and the options, and option setters.
+// the unrolled geometry and the options, the options writers are given, and option setters.
 #include "api/output.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -159,6 +160,22 @@ TEST(SetNumber, SetsTheOptionElseAParameter) {
   EXPECT_EQ(session.numberOverrides().count("Mesh.Algorithm"), 0u);
   EXPECT_EQ(session.options().string("General.DefaultFileName"), "plate.geo");
   EXPECT_EQ(session.stringOverrides().at("label"), "top");
+}
+
+TEST(WriteOptions, PicturesTakeTheirSizeAndViewFromPrintAndGeneralOptions) {
+  OptionRegistry options;
+  MeshWriteOptions w = api::writeOptions(options);
+  EXPECT_EQ(w.pictureWidth, 800);  // General.GraphicsWidth and Height, as Print.* are -1
+  EXPECT_EQ(w.pictureHeight, 600);
+  EXPECT_FALSE(w.viewRotation);
+  options.setNumber("General.GraphicsWidth", 320);
+  options.setNumber("Print.Height", 100);
+  options.setNumber("General.RotationZ", 90);
+  w = api::writeOptions(options);
+  EXPECT_EQ(w.pictureWidth, 320);
+  EXPECT_EQ(w.pictureHeight, 100);
+  ASSERT_TRUE(w.viewRotation);
+  EXPECT_EQ(*w.viewRotation, (std::array<double, 3>{0, 0, 90}));
 }
 
 }  // namespace

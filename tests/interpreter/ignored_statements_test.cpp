@@ -24,7 +24,7 @@ TEST(IgnoredStatements, UnsupportedShapeOperationsAndMergesCount) {
 
 TEST(IgnoredStatements, SupportedStatementsAndOtherWarningsAreNotRecorded) {
   ScriptRun run;
-  run.run("Point(1) = {0, 0, 0};\nMesh.NoSuchOption = 1;\nSave \"shot.png\";\n");
+  run.run("Point(1) = {0, 0, 0};\nMesh.NoSuchOption = 1;\nSave \"shot.eps\";\n");
   EXPECT_EQ(run.log.warnings.size(), 2u);
   EXPECT_EQ(run.session.ignoredStatementCount(), 0u);
   EXPECT_FALSE(run.session.firstIgnoredStatement());

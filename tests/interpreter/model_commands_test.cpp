@@ -155,12 +155,27 @@ TEST_F(ModelCommands, SaveUnrolledGeometry) {
 
 TEST_F(ModelCommands, SaveInAnUnwrittenFormatWarnsAndWritesNothing) {
   ScriptRun run;
-  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.wrl\";\nPrint \"shot.png\";\n");
+  runMain(run, std::string(kUnitSquare) + "Mesh 2;\nSave \"out.wrl\";\nPrint \"shot.eps\";\n");
   EXPECT_FALSE(fs::exists(dir_ / "out.wrl"));
-  EXPECT_FALSE(fs::exists(dir_ / "shot.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "shot.eps"));
   ASSERT_EQ(run.log.warnings.size(), 2u);
   EXPECT_NE(run.log.warnings[0].find("cannot write"), std::string::npos);
   EXPECT_NE(run.log.warnings[0].find("out.wrl"), std::string::npos);
+}
+
+TEST_F(ModelCommands, PrintWritesAPictureOfTheMeshOfTheSizeTheScriptSets) {
+  ScriptRun run;
+  runMain(run, std::string(kUnitSquare) +
+                   "Mesh 2;\nPrint.Width = 64; Print.Height = 48;\nPrint \"shot.png\";\n"
+                   "Printf(\"%g\", Print.Width);\nSave \"shot.svg\";\n");
+  EXPECT_EQ(run.out.str(), "64\n");
+  EXPECT_TRUE(run.log.warnings.empty());
+  EXPECT_NE(read("shot.svg").find("width=\"64\" height=\"48\""), std::string::npos);
+  const std::string png = read("shot.png");
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_EQ(static_cast<unsigned char>(png[19]), 64u);  // IHDR width, big-endian
+  EXPECT_EQ(static_cast<unsigned char>(png[23]), 48u);  // IHDR height
 }
 
 TEST_F(ModelCommands, SaveWritesEveryFormatOfTheTable) {

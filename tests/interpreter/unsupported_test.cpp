@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kStatements[] = {
     "Smoother Surface{1} = 3;",
     "Reverse Surface{1};",
-    "Save \"x.png\";",
+    "Save \"x.eps\";",
     "RefineMesh;",
     "Merge \"whatever.wrl\";",
     "Periodic Surface{2} = {1};",
