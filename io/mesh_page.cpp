@@ -10,6 +10,7 @@
 
 #include "io/msh_content.h"
 #include "mesh/core/quality.h"
+#include "mesh/partition/partition_sets.h"
 
 namespace geomesh {
 
@@ -173,56 +174,27 @@ void findNeighbours(MeshPage& page) {
 
 const std::vector<std::vector<int>>& volumeFaces(ElementFamily family) {
   static const std::vector<std::vector<int>> none;
-  static const std::vector<std::vector<int>> tet = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  static const std::vector<std::vector<int>> hex = {{0, 3, 2, 1}, {0, 1, 5, 4}, {0, 4, 7, 3},
-                                                    {1, 2, 6, 5}, {2, 3, 7, 6}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> prism = {
-      {0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {0, 3, 5, 2}, {1, 2, 5, 4}};
-  static const std::vector<std::vector<int>> pyramid = {
-      {0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
-  switch (family) {
-    case ElementFamily::Tet:
-      return tet;
-    case ElementFamily::Hex:
-      return hex;
-    case ElementFamily::Prism:
-      return prism;
-    case ElementFamily::Pyramid:
-      return pyramid;
-    default:
-      return none;
-  }
+  return dimension(family) == 3 ? facetsOf(family) : none;
 }
 
-const std::vector<std::pair<int, int>>& familyEdges(ElementFamily family) {
-  using Edges = std::vector<std::pair<int, int>>;
-  static const Edges none;
-  static const Edges line = {{0, 1}};
-  static const Edges triangle = {{0, 1}, {1, 2}, {2, 0}};
-  static const Edges quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const Edges tet = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
-  static const Edges hex = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                            {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-  static const Edges prism = {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5},
-                              {5, 3}, {0, 3}, {1, 4}, {2, 5}};
-  static const Edges pyramid = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}};
+NodePlaces familyEdges(ElementFamily family) {
   switch (family) {
     case ElementFamily::Line:
-      return line;
+      return {{0, 1}};
     case ElementFamily::Triangle:
-      return triangle;
+      return triangleEdges();
     case ElementFamily::Quad:
-      return quad;
+      return quadEdges();
     case ElementFamily::Tet:
-      return tet;
+      return tetEdges();
     case ElementFamily::Hex:
-      return hex;
+      return hexEdgesBottomTopVertical();
     case ElementFamily::Prism:
-      return prism;
+      return prismEdgesBottomTopVertical();
     case ElementFamily::Pyramid:
-      return pyramid;
+      return pyramidEdges();
     default:
-      return none;
+      return {};
   }
 }
 

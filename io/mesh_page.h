@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/node_order.h"
 #include "kernel/model.h"
 #include "mesh/core/mesh.h"
 
@@ -48,10 +49,10 @@ struct MeshPage {
   std::vector<std::pair<std::string, std::size_t>> counts;  // per element type name
 };
 
-// The faces of a volume family as corner lists (3 or 4, outward for a valid element), and
-// the edges of any family as corner pairs.
+// The faces of a volume family as corner lists (3 or 4, outward for a valid element: those of
+// facetsOf), and the edges of any family as corner pairs.
 const std::vector<std::vector<int>>& volumeFaces(ElementFamily family);
-const std::vector<std::pair<int, int>>& familyEdges(ElementFamily family);
+NodePlaces familyEdges(ElementFamily family);
 
 // The elements a mesh file would save (only those of physical groups when any exist, unless
 // saveAll), points left out. Throws std::invalid_argument when none is left to show.

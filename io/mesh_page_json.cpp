@@ -55,8 +55,7 @@ std::string families() {
   for (ElementFamily f :
        {ElementFamily::Line, ElementFamily::Triangle, ElementFamily::Quad, ElementFamily::Tet,
         ElementFamily::Hex, ElementFamily::Prism, ElementFamily::Pyramid}) {
-    std::vector<std::vector<int>> edges;
-    for (const auto& [a, b] : familyEdges(f)) edges.push_back({a, b});
+    const NodePlaces edges = familyEdges(f);
     out += (out.size() > 1 ? "," : "") + quoted(familyName(f)) +
            ":{\"dim\":" + std::to_string(dimension(f)) +
            ",\"corners\":" + std::to_string(vertexCount(f)) +
