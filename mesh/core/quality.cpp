@@ -73,16 +73,6 @@ double tetGamma(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   return 3 * inradius / norm(center);
 }
 
-double tetMeanRatioCubed(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  const Vec3 u = b - a, v = c - a, w = d - a;
-  const double volume6 = dot(u, cross(v, w));
-  const double edges = dot(u, u) + dot(v, v) + dot(w, w) + dot(c - b, c - b) +
-                       dot(d - b, d - b) + dot(d - c, d - c);
-  if (!(edges > 0)) return 0;
-  // (12 (3V)^(2/3) / S)^3 = 15552 V^2 / S^3, with V = volume6 / 6.
-  return 432 * volume6 * std::abs(volume6) / (edges * edges * edges);
-}
-
 double tetSicn(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const Mat3 j{b - a, c - a, d - a};
   const double det = dot(j.c0, cross(j.c1, j.c2));

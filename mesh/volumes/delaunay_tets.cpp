@@ -10,6 +10,18 @@
 
 namespace geomesh {
 
+namespace {
+
+// kEdgeApart[f][g]: the two corners of a tetrahedron other than f and g (f != g), the edge
+// shared by its faces f and g. A table rather than a loop that fills a small array: reading
+// that array back as a whole right after writing it stalls the store buffer.
+constexpr int kEdgeApart[4][4][2] = {{{-1, -1}, {2, 3}, {1, 3}, {1, 2}},
+                                     {{2, 3}, {-1, -1}, {0, 3}, {0, 2}},
+                                     {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
+                                     {{1, 2}, {0, 2}, {0, 1}, {-1, -1}}};
+
+}  // namespace
+
 std::uint32_t DelaunayTets::newSlot() {
   if (!free_.empty()) {
     const std::uint32_t t = free_.back();
@@ -120,13 +132,24 @@ bool DelaunayTets::shapeCavity(Vec3 p, std::uint32_t t0) {
     const std::uint32_t n = neighbours[4 * std::size_t{t} + f];
     return n == kNoTet || constrained(t, f) || !inCavity(n >> 2);
   };
-  bool shrunk = false;
+  // Until a tetrahedron leaves, the faces that see p are collected as the boundary: most
+  // cavities keep them all, and then need no second walk.
+  bool shrunk = false, keptInside = false;
+  boundary_.clear();
   for (bool changed = true; changed;) {
     changed = false;
     for (std::uint32_t t : cavity_) {
       if (!inCavity(t)) continue;
       for (int f = 0; f < 4; ++f) {
-        if (!isBoundary(t, f) || seesFromInside(t, f)) continue;
+        if (!isBoundary(t, f)) continue;
+        if (seesFromInside(t, f)) {
+          if (shrunk) continue;
+          boundary_.push_back(4 * t + static_cast<std::uint32_t>(f));
+          // A kept face with the cavity on both sides cannot be re-made.
+          const std::uint32_t n = neighbours[4 * std::size_t{t} + f];
+          if (n != kNoTet && inCavity(n >> 2)) keptInside = true;
+          continue;
+        }
         if (t == t0) return false;
         flags[t] &= ~kInCavity;
         changed = shrunk = true;
@@ -134,32 +157,32 @@ bool DelaunayTets::shapeCavity(Vec3 p, std::uint32_t t0) {
       }
     }
   }
-  if (shrunk) {
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < cavity_.size(); ++i) {
-      const std::uint32_t t = cavity_[i];
-      if (inCavity(t)) cavity_[kept++] = t;
-    }
-    cavity_.resize(kept);
-    // Connected through faces that are not kept, from t0 (kReached while walked; boundary_
-    // serves as the walk's queue).
-    std::size_t reached = 1;
-    boundary_.assign(1, t0);
-    flags[t0] |= kReached;
-    for (std::size_t i = 0; i < boundary_.size(); ++i)
-      for (int f = 0; f < 4; ++f) {
-        const std::uint32_t t = boundary_[i];
-        const std::uint32_t n = neighbours[4 * std::size_t{t} + f];
-        if (n == kNoTet || constrained(t, f) || !inCavity(n >> 2) ||
-            (flags[n >> 2] & kReached))
-          continue;
-        flags[n >> 2] |= kReached;
-        boundary_.push_back(n >> 2);
-        ++reached;
-      }
-    for (std::uint32_t t : cavity_) flags[t] &= ~kReached;
-    if (reached != cavity_.size()) return false;
+  if (!shrunk) return !keptInside;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < cavity_.size(); ++i) {
+    const std::uint32_t t = cavity_[i];
+    if (inCavity(t)) cavity_[kept++] = t;
   }
+  cavity_.resize(kept);
+  // Connected through faces that are not kept, from t0 (kReached while walked; boundary_
+  // serves as the walk's queue).
+  std::size_t reached = 1;
+  boundary_.assign(1, t0);
+  flags[t0] |= kReached;
+  for (std::size_t i = 0; i < boundary_.size(); ++i)
+    for (int f = 0; f < 4; ++f) {
+      const std::uint32_t t = boundary_[i];
+      const std::uint32_t n = neighbours[4 * std::size_t{t} + f];
+      if (n == kNoTet || constrained(t, f) || !inCavity(n >> 2) ||
+          (flags[n >> 2] & kReached))
+        continue;
+      flags[n >> 2] |= kReached;
+      boundary_.push_back(n >> 2);
+      ++reached;
+    }
+  for (std::uint32_t t : cavity_) flags[t] &= ~kReached;
+  if (reached != cavity_.size()) return false;
+  // The cavity's boundary again, now that it is smaller.
   boundary_.clear();
   for (std::uint32_t t : cavity_)
     for (int f = 0; f < 4; ++f) {
@@ -194,25 +217,43 @@ DelaunayTets::Insertion DelaunayTets::insertVertex(std::uint32_t vertex, std::ui
   boundary_.clear();
   cavity_.push_back(t0);
   flags[t0] |= kInCavity;
+  // A tetrahedron found outside the sphere test is marked (kReached) so that its other faces
+  // on the cavity do not test it again; the marks go once the cavity is grown.
+  outside_.clear();
+  auto clearOutside = [&] {
+    for (std::uint32_t t : outside_) flags[t] &= ~kReached;
+  };
   auto refuse = [&](Insertion why) {
     for (std::uint32_t t : cavity_) flags[t] &= ~kInCavity;
     return why;
   };
   for (std::size_t i = 0; i < cavity_.size(); ++i) {
     const std::uint32_t t = cavity_[i];
+    // The four neighbours' vertices are requested together, so that their cache misses
+    // overlap instead of waiting on each sphere test in turn.
+    for (int f = 0; f < 4; ++f)
+      if (const std::uint32_t n = neighbours[4 * std::size_t{t} + f]; n != kNoTet)
+        __builtin_prefetch(&vertices[4 * std::size_t{n >> 2}]);
     for (int f = 0; f < 4; ++f) {
       const std::uint32_t n = neighbours[4 * std::size_t{t} + f];
       if (n == kNoTet || constrained(t, f)) continue;
       const std::uint32_t nt = n >> 2;
-      if (inCavity(nt)) continue;
+      if (flags[nt] & (kInCavity | kReached)) continue;
       const std::uint32_t* w = &vertices[4 * std::size_t{nt}];
       if (insphere(points[w[0]], points[w[1]], points[w[2]], points[w[3]], p) >= 0) {
         flags[nt] |= kInCavity;
         cavity_.push_back(nt);
-        if (tooClose(nt)) return refuse(Insertion::kTooClose);
+        if (tooClose(nt)) {
+          clearOutside();
+          return refuse(Insertion::kTooClose);
+        }
+      } else {
+        flags[nt] |= kReached;
+        outside_.push_back(nt);
       }
     }
   }
+  clearOutside();
   if (!shapeCavity(p, t0)) return refuse(Insertion::kDegenerate);
   if (!keptEdges_.empty() && removesKeptEdge(cavity_)) return refuse(Insertion::kKeptEdge);
 
@@ -245,7 +286,7 @@ DelaunayTets::Insertion DelaunayTets::insertVertex(std::uint32_t vertex, std::ui
   for (const NewTet& n : made) {
     const std::uint32_t t = newSlot();
     created_.push_back(t);
-    std::copy(n.v.begin(), n.v.end(), vertices.begin() + 4 * std::size_t{t});
+    for (int k = 0; k < 4; ++k) vertices[4 * std::size_t{t} + k] = n.v[k];
     neighbours[4 * std::size_t{t} + n.face] = n.outer;
     if (n.outer != kNoTet) neighbours[n.outer] = 4 * t + static_cast<std::uint32_t>(n.face);
     if (n.kept) flags[t] |= static_cast<std::uint8_t>(1u << n.face);
@@ -253,11 +294,8 @@ DelaunayTets::Insertion DelaunayTets::insertVertex(std::uint32_t vertex, std::ui
     // each is the other one on that edge.
     for (int g = 0; g < 4; ++g) {
       if (g == n.face) continue;
-      std::uint32_t e[2];
-      int m = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != g && k != n.face) e[m++] = n.v[k];
-      const std::uint64_t key = vertexPairKey(e[0], e[1]);
+      const int* e = kEdgeApart[n.face][g];
+      const std::uint64_t key = vertexPairKey(n.v[e[0]], n.v[e[1]]);
       std::size_t slot = (key * 0x9E3779B97F4A7C15ull) >> 20 & (tableSize - 1);
       while (hashKeys_[slot] != ~std::uint64_t{0} && hashKeys_[slot] != key)
         slot = (slot + 1) & (tableSize - 1);

@@ -105,7 +105,7 @@ class DelaunayTets {
   std::uint32_t last_ = 0;
   double minHeight_ = 0;
   // Scratch of insert(), kept to avoid allocations.
-  std::vector<std::uint32_t> cavity_, boundary_, created_;
+  std::vector<std::uint32_t> cavity_, boundary_, created_, outside_;
   std::vector<std::uint64_t> hashKeys_;
   std::vector<std::uint32_t> hashValues_;
   std::vector<std::uint8_t> keptVertex_;

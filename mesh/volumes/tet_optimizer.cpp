@@ -67,7 +67,7 @@ double gammaFor(const std::vector<Vec3>& xyz, const Tet& t, double shapeOfT, dou
 // and edges (sorted) are never flipped away.
 class TetOptimizer {
  public:
-  TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable, const std::vector<Tet>& tets,
+  TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable, std::vector<Tet> tets,
                double threshold, std::vector<Face> keptFaces, std::vector<std::uint64_t> keptEdges);
   TetOptimizerStats run();
   std::vector<Tet> tetrahedra() const;
@@ -90,11 +90,12 @@ class TetOptimizer {
   double threshold_;
   std::vector<Face> keptFaces_;
   std::vector<std::uint64_t> keptEdges_;
+  std::vector<int> shared_;  // scratch of removeEdge: the tetrahedra around the edge
   TetOptimizerStats stats_;
 };
 
 TetOptimizer::TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable,
-                           const std::vector<Tet>& tets, double threshold,
+                           std::vector<Tet> tets, double threshold,
                            std::vector<Face> keptFaces, std::vector<std::uint64_t> keptEdges)
     : xyz_(xyz),
       movable_(std::move(movable)),
@@ -102,6 +103,13 @@ TetOptimizer::TetOptimizer(std::vector<Vec3>& xyz, std::vector<char> movable,
       threshold_(threshold),
       keptFaces_(std::move(keptFaces)),
       keptEdges_(std::move(keptEdges)) {
+  // Room for the tetrahedra that flips and edge removals add (dead ones are not reused): a
+  // vector grown from empty would end with up to twice the capacity it needs.
+  const std::size_t room = tets.size() + tets.size() / 8 + 16;
+  tets_.reserve(room);
+  quality_.reserve(room);
+  shape_.reserve(room);
+  alive_.reserve(room);
   for (const Tet& t : tets) addTet(t);
 }
 
@@ -122,6 +130,7 @@ void TetOptimizer::removeTet(int t) {
 
 std::vector<Tet> TetOptimizer::tetrahedra() const {
   std::vector<Tet> out;
+  out.reserve(static_cast<std::size_t>(std::count(alive_.begin(), alive_.end(), 1)));
   for (std::size_t t = 0; t < tets_.size(); ++t)
     if (alive_[t]) out.push_back(tets_[t]);
   return out;
@@ -159,8 +168,12 @@ std::vector<int> edgeRing(const std::vector<Vec3>& xyz, const std::vector<Tet>& 
 std::pair<double, std::vector<Tet>> triangulateRing(const std::vector<Vec3>& xyz,
                                                     const std::vector<int>& ring, int a, int b) {
   const std::size_t n = ring.size();
-  std::vector<double> best(n * n, 2.0);  // best[i * n + j]: polygon ri..rj; 2: empty
-  std::vector<std::size_t> split(n * n, 0);
+  // best[i * n + j]: polygon ri..rj; 2: empty. Rings have at most kMaxRing nodes: the tables
+  // live on the stack, as this runs for most edges of the poor tetrahedra.
+  std::array<double, kMaxRing * kMaxRing> best;
+  std::array<std::size_t, kMaxRing * kMaxRing> split;
+  std::fill(best.begin(), best.begin() + std::ptrdiff_t(n * n), 2.0);
+  std::fill(split.begin(), split.begin() + std::ptrdiff_t(n * n), 0);
   auto triangle = [&](std::size_t i, std::size_t j, std::size_t k) {
     return std::min(shape(xyz, {a, ring[i], ring[j], ring[k]}),
                     shape(xyz, {b, ring[i], ring[k], ring[j]}));
@@ -193,7 +206,8 @@ std::pair<double, std::vector<Tet>> triangulateRing(const std::vector<Vec3>& xyz
 // Removing edge ab only takes out the faces around it: a kept face has kept edges.
 bool TetOptimizer::removeEdge(int a, int b) {
   if (std::binary_search(keptEdges_.begin(), keptEdges_.end(), edgeKey(a, b))) return false;
-  std::vector<int> shared;
+  std::vector<int>& shared = shared_;
+  shared.clear();
   for (int t : around_[a])
     if (std::find(tets_[t].begin(), tets_[t].end(), b) != tets_[t].end()) shared.push_back(t);
   if (shared.size() < 3 || shared.size() > kMaxRing) return false;
@@ -280,8 +294,9 @@ bool TetOptimizer::smoothNode(int v) {
   for (int step = 0; step < kSmoothingSteps; ++step) {
     int worst = around_[v].front();
     xyz_[v] = at;
+    double worstShape = shape(xyz_, tets_[worst]);
     for (int t : around_[v])
-      if (shape(xyz_, tets_[t]) < shape(xyz_, tets_[worst])) worst = t;
+      if (const double q = shape(xyz_, tets_[t]); q < worstShape) worst = t, worstShape = q;
     const double h = 1e-5 * length;
     const Vec3 axes[3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
     double g[3];
@@ -372,6 +387,9 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
   // rounds, for the poor tetrahedra a round leaves at the border of its region.
   constexpr int kRounds = 3;
   TetOptimizerStats stats;
+  // The tetrahedra before `unchecked` are known not to be below the threshold: after a round,
+  // those left out of its region (whose nodes did not move), so only its output is measured.
+  std::size_t unchecked = 0;
   for (int round = 0; round < kRounds; ++round) {
     auto tetAt = [&](std::size_t i) {
       return Tet{int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])};
@@ -380,7 +398,7 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
     auto touchesPoor = [&](const Tet& t) {
       return poor[t[0]] || poor[t[1]] || poor[t[2]] || poor[t[3]];
     };
-    for (std::size_t i = 0; i < tets.size(); i += 4) {
+    for (std::size_t i = unchecked; i < tets.size(); i += 4) {
       const Tet t = tetAt(i);
       if (gammaFor(points, t, shape(points, t), threshold) < threshold)
         for (int n : t) poor[n] = 1;
@@ -391,8 +409,14 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
       if (const Tet t = tetAt(i); touchesPoor(t))
         for (int n : t) grown[n] = 1;
     poor.swap(grown);
+    // Counted first, so that the two parts take no more memory than they hold.
+    std::size_t inRegion = 0;
+    for (std::size_t i = 0; i < tets.size(); i += 4) inRegion += touchesPoor(tetAt(i));
+    if (inRegion == 0) break;
     std::vector<Tet> region;
     std::vector<std::uint32_t> rest;
+    region.reserve(inRegion);
+    rest.reserve(tets.size() - 4 * inRegion);
     for (std::size_t i = 0; i < tets.size(); i += 4) {
       const Tet t = tetAt(i);
       if (touchesPoor(t))
@@ -401,14 +425,20 @@ TetOptimizerStats optimizeTetrahedra(std::vector<Vec3>& points, std::vector<char
         rest.insert(rest.end(), tets.begin() + std::ptrdiff_t(i),
                     tets.begin() + std::ptrdiff_t(i + 4));
     }
-    if (region.empty()) break;
     std::vector<std::uint32_t>().swap(tets);  // all in `region` or `rest` now
     std::vector<char> free = movable;
     for (std::size_t n = 0; n < free.size(); ++n) free[n] = free[n] && poor[n];
-    TetOptimizer optimizer(points, std::move(free), region, threshold, faces, edges);
-    const TetOptimizerStats done = optimizer.run();
+    TetOptimizerStats done;
+    std::vector<Tet> improved;
+    {  // the optimizer's arrays are freed before the parts are joined
+      TetOptimizer optimizer(points, std::move(free), std::move(region), threshold, faces, edges);
+      done = optimizer.run();
+      improved = optimizer.tetrahedra();
+    }
     tets = std::move(rest);
-    for (const Tet& t : optimizer.tetrahedra())
+    unchecked = tets.size();
+    tets.reserve(tets.size() + 4 * improved.size());
+    for (const Tet& t : improved)
       for (int n : t) tets.push_back(static_cast<std::uint32_t>(n));
     stats.edgeRemovals += done.edgeRemovals;
     stats.faceSwaps += done.faceSwaps;
