@@ -4,6 +4,8 @@
 #include <bit>
 #include <string_view>
 
+#include "io/binary_output.h"
+
 namespace geomesh {
 
 namespace {
@@ -16,24 +18,34 @@ int sextet(char c) {
   return at == std::string_view::npos ? -1 : static_cast<int>(at);
 }
 
-void appendLittleEndian(std::vector<std::uint8_t>& bytes, std::uint32_t word) {
-  for (int k = 0; k < 4; ++k) bytes.push_back(static_cast<std::uint8_t>(word >> (8 * k)));
+template <class T>
+std::string littleEndianBase64(std::span<const T> values) {
+  std::string bytes;
+  bytes.reserve(sizeof(T) * values.size());
+  for (T v : values) appendRaw(bytes, v, std::endian::little);
+  return encodeBase64(bytes);
 }
 
 }  // namespace
 
-std::string encodeBase64(std::span<const std::uint8_t> bytes) {
+std::string encodeBase64(std::string_view bytes) {
   std::string text;
   text.reserve((bytes.size() + 2) / 3 * 4);
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
     const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t group = std::uint32_t(bytes[i]) << 16;
-    if (n > 1) group |= std::uint32_t(bytes[i + 1]) << 8;
-    if (n > 2) group |= bytes[i + 2];
+    const auto byte = [&](std::size_t k) { return std::uint32_t(std::uint8_t(bytes[i + k])); };
+    std::uint32_t group = byte(0) << 16;
+    if (n > 1) group |= byte(1) << 8;
+    if (n > 2) group |= byte(2);
     for (std::size_t k = 0; k < 4; ++k)
       text += k <= n ? kAlphabet[(group >> (18 - 6 * k)) & 63] : '=';
   }
   return text;
+}
+
+std::string encodeBase64(std::span<const std::uint8_t> bytes) {
+  return encodeBase64(
+      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 std::optional<std::vector<std::uint8_t>> decodeBase64(const std::string& text) {
@@ -56,17 +68,11 @@ std::optional<std::vector<std::uint8_t>> decodeBase64(const std::string& text) {
 }
 
 std::string base64OfFloats(std::span<const float> values) {
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(4 * values.size());
-  for (float v : values) appendLittleEndian(bytes, std::bit_cast<std::uint32_t>(v));
-  return encodeBase64(bytes);
+  return littleEndianBase64(values);
 }
 
 std::string base64OfUint32s(std::span<const std::uint32_t> values) {
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(4 * values.size());
-  for (std::uint32_t v : values) appendLittleEndian(bytes, v);
-  return encodeBase64(bytes);
+  return littleEndianBase64(values);
 }
 
 }  // namespace geomesh

@@ -6,10 +6,12 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace geomesh {
 
+std::string encodeBase64(std::string_view bytes);
 std::string encodeBase64(std::span<const std::uint8_t> bytes);
 // Nullopt when `text` is not padded base64.
 std::optional<std::vector<std::uint8_t>> decodeBase64(const std::string& text);

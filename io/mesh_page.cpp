@@ -112,18 +112,11 @@ void measureQuality(const Mesh& mesh, const ElementBlock& block, PageBlock& out)
   for (std::size_t i = 0; i < block.size(); ++i) {
     std::array<Vec3, 8> v;
     for (int c = 0; c < k; ++c) v[c] = mesh.node(block.element(i)[c]);
-    double gamma = 0, sicn = 0;
-    if (f == ElementFamily::Triangle) {
-      gamma = triangleGamma(v[0], v[1], v[2]);
-      sicn = triangleSicn(v[0], v[1], v[2]);
-    } else if (f == ElementFamily::Tet) {
-      gamma = tetGamma(v[0], v[1], v[2], v[3]);
-      sicn = tetSicn(v[0], v[1], v[2], v[3]);
-    } else {
-      gamma = sicn = cornerScaledJacobian(block.type, std::span<const Vec3>(v.data(), k));
-    }
-    out.gamma.push_back(static_cast<float>(gamma));
-    out.sicn.push_back(static_cast<float>(sicn));
+    const std::span<const Vec3> corners(v.data(), k);
+    out.gamma.push_back(
+        static_cast<float>(elementQuality(block.type, corners, QualityMeasure::Gamma)));
+    out.sicn.push_back(
+        static_cast<float>(elementQuality(block.type, corners, QualityMeasure::Sicn)));
   }
 }
 

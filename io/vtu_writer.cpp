@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "io/base64.h"
 #include "io/binary_output.h"
 #include "io/formats.h"
 #include "io/vtk_cells.h"
@@ -17,22 +18,6 @@
 namespace geomesh {
 
 namespace {
-
-std::string base64(std::string_view bytes) {
-  static constexpr char kDigits[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t group = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      group = group << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k)
-      out += k <= n ? kDigits[(group >> (18 - 6 * k)) & 63] : '=';
-  }
-  return out;
-}
 
 // The values of one DataArray, as text or as little-endian bytes.
 class ArrayData {
@@ -57,7 +42,7 @@ class ArrayData {
     if (!binary_) return text_;
     std::string sized;
     appendRaw(sized, static_cast<std::uint64_t>(bytes_.size()), std::endian::little);
-    return base64(sized + bytes_) + '\n';
+    return encodeBase64(sized + bytes_) + '\n';
   }
 
  private:

@@ -2,6 +2,7 @@
 #include "mesh/core/quality.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "mesh/core/element_corners.h"
@@ -82,25 +83,34 @@ double tetSicn(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   return det > 0 ? 1 / kappa : -1 / kappa;
 }
 
+double elementQuality(ElementType type, std::span<const Vec3> corners, QualityMeasure measure) {
+  const bool gamma = measure == QualityMeasure::Gamma;
+  const auto& v = corners;
+  switch (family(type)) {
+    case ElementFamily::Triangle:
+      return gamma ? triangleGamma(v[0], v[1], v[2]) : triangleSicn(v[0], v[1], v[2]);
+    case ElementFamily::Tet:
+      return gamma ? tetGamma(v[0], v[1], v[2], v[3]) : tetSicn(v[0], v[1], v[2], v[3]);
+    default:
+      return cornerScaledJacobian(type, corners);
+  }
+}
+
 QualityStats meshQuality(const Mesh& mesh, int dim, QualityMeasure measure) {
   QualityStats stats;
   double sum = 0, lowest = 1e300;
   const ElementFamily wanted = dim == 2 ? ElementFamily::Triangle : ElementFamily::Tet;
+  const int corners = dim == 2 ? 3 : 4;
   for (const auto& [id, em] : mesh.entities()) {
     for (const ElementBlock& block : em.blocks) {
       if (family(block.type) != wanted) continue;
       // Elements of any order, measured on their corners (their first nodes).
       for (std::size_t e = 0; e < block.size(); ++e) {
         const auto n = block.element(e);
-        double q;
-        if (dim == 2) {
-          const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]);
-          q = measure == QualityMeasure::Gamma ? triangleGamma(a, b, c) : triangleSicn(a, b, c);
-        } else {
-          const Vec3 a = mesh.node(n[0]), b = mesh.node(n[1]), c = mesh.node(n[2]),
-                     d = mesh.node(n[3]);
-          q = measure == QualityMeasure::Gamma ? tetGamma(a, b, c, d) : tetSicn(a, b, c, d);
-        }
+        std::array<Vec3, 4> v;
+        for (int c = 0; c < corners; ++c) v[c] = mesh.node(n[c]);
+        const double q = elementQuality(block.type, std::span<const Vec3>(v.data(), corners),
+                                        measure);
         sum += q;
         lowest = std::min(lowest, q);
         ++stats.count;

@@ -48,6 +48,11 @@ double cornerScaledJacobian(ElementType type, std::span<const Vec3> nodes);
 
 enum class QualityMeasure { Gamma, Sicn };
 
+// The quality of the first-order element of an element's corners (its first vertexCount nodes,
+// in `corners`): gamma or SICN for triangles (SICN unsigned) and tetrahedra, the corner scaled
+// Jacobian for the other families, whichever the measure.
+double elementQuality(ElementType type, std::span<const Vec3> corners, QualityMeasure measure);
+
 struct QualityStats {
   std::size_t count = 0;
   double min = 0, mean = 0;

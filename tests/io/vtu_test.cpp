@@ -4,10 +4,12 @@
 
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "io/base64.h"
 #include "tests/io/format_test_meshes.h"
 
 namespace geomesh {
@@ -15,24 +17,14 @@ namespace {
 
 using namespace testing;
 
-std::string decodeBase64(const std::string& text) {
-  static const std::string digits =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string bytes;
-  std::uint32_t group = 0;
-  int bits = 0;
-  for (char c : text) {
-    if (c == '=' || c == '\n' || c == ' ') continue;
-    const std::size_t value = digits.find(c);
-    EXPECT_NE(value, std::string::npos) << c;
-    group = group << 6 | static_cast<std::uint32_t>(value);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      bytes += static_cast<char>(group >> bits & 0xFF);
-    }
-  }
-  return bytes;
+// The bytes of a binary DataArray's content: base64, with the line breaks and spaces around it.
+std::string decodedContent(const std::string& text) {
+  std::string digits;
+  for (char c : text)
+    if (c != '\n' && c != ' ') digits += c;
+  const std::optional<std::vector<std::uint8_t>> bytes = decodeBase64(digits);
+  EXPECT_TRUE(bytes.has_value()) << text;
+  return bytes ? std::string(bytes->begin(), bytes->end()) : std::string();
 }
 
 // The DataArray whose opening tag holds `marker`: that tag, and the text up to its closing tag.
@@ -61,7 +53,7 @@ std::vector<T> asciiValues(const DataArray& array) {
 // The values of a binary array: a UInt64 byte count, then little-endian values.
 template <class T>
 std::vector<T> binaryValues(const DataArray& array) {
-  const std::string bytes = decodeBase64(array.content);
+  const std::string bytes = decodedContent(array.content);
   std::uint64_t size = 0;
   std::memcpy(&size, bytes.data(), 8);
   EXPECT_EQ(size + 8, bytes.size());
